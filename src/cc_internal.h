@@ -1,0 +1,15 @@
+/* Private to the library: the machinery that lets every pair algorithm be written once and
+ * compiled for double and for float. Never installed. */
+#ifndef CC_INTERNAL_H
+#define CC_INTERNAL_H
+
+#include "circlecollide.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define CC__CAT2(a, b) a##b
+#define CC__CAT(a, b) CC__CAT2(a, b)
+
+#endif

@@ -1,0 +1,3 @@
+/* Static overlap and push-apart, in double and float. */
+#define CC_TEMPLATE "detect.inc"
+#include "instantiate.h"

@@ -1,0 +1,51 @@
+/* cc_sweep_many: the circle-circle sweep over columns of inputs (structure of arrays), for
+ * bulk queries from bindings and for vector units. Double precision only. */
+#include "cc_internal.h"
+
+#include "precision_double.h"
+#include "helpers.inc"
+#include "solver.inc"
+#include "precision_end.h"
+
+static int cc__columns_ok(const cc_circle_soa *c)
+{
+    return c != NULL && c->px != NULL && c->py != NULL && c->vx != NULL && c->vy != NULL && c->radius != NULL;
+}
+
+/* The contract validates everything before writing anything; this pass is branch-free so that
+ * the compiler can vectorise it. */
+static int cc__inputs_ok(size_t n, const cc_circle_soa *c)
+{
+    size_t i;
+    int ok = 1;
+    for (i = 0; i < n; i++)
+        ok &= isfinite(c->px[i]) & isfinite(c->py[i]) & isfinite(c->vx[i]) & isfinite(c->vy[i]) &
+              isfinite(c->radius[i]) & (c->radius[i] > 0.0);
+    return ok;
+}
+
+CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa *b, double t_max, double *t_out,
+                          int *result_out)
+{
+    size_t i;
+    long hits = 0;
+    if (!cc__columns_ok(a) || !cc__columns_ok(b) || (t_out == NULL && n > 0) || !(t_max >= 0.0) ||
+        !cc__inputs_ok(n, a) || !cc__inputs_ok(n, b))
+        return CC_ERR_INVALID;
+    for (i = 0; i < n; i++) {
+        int eL, eV, r;
+        double t = HUGE_VAL, R = a->radius[i] + b->radius[i];
+        cc_vec2 n_unused;
+        cc_vec2 dp = cc__diff(cc__v(a->px[i], a->py[i]), cc__v(b->px[i], b->py[i]), &eL);
+        cc_vec2 dv = cc__diff(cc__v(a->vx[i], a->vy[i]), cc__v(b->vx[i], b->vy[i]), &eV);
+        r = cc__sweep_rel(dp, dv, eL ? R * 0.5 : R, eL, eV, t_max, &t, &n_unused);
+        if (r == CC_MISS)
+            t = HUGE_VAL;
+        else
+            hits++;
+        t_out[i] = t;
+        if (result_out != NULL)
+            result_out[i] = r;
+    }
+    return hits;
+}
