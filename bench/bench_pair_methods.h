@@ -1,0 +1,45 @@
+/* The pair benchmark's inputs (one set of pairs in every layout a method needs) and its
+ * methods: each sweeps pairs [lo, hi) and writes a time and a result code per pair. */
+#ifndef CC_BENCH_PAIR_METHODS_H
+#define CC_BENCH_PAIR_METHODS_H
+
+#include "circlecollide.h"
+
+#include <stddef.h>
+
+#define BENCH_MAX_METHODS 8
+#define BENCH_BLOCK 1024 /* pairs per cache-resident block: 2 x 48 KiB of double inputs */
+
+typedef struct bench_pair_data {
+    size_t n;
+    double t_max;
+    cc_circle *a, *b;          /* the pairs, as cc_sweep takes them */
+    cc_circlef *af, *bf;       /* the same rounded to float, for every float method */
+    double *col[10];           /* columns px, py, vx, vy, radius of a then of b */
+    cc_circle_soa soa_a, soa_b; /* views of col for cc_sweep_many */
+} bench_pair_data;
+
+/* t[i] = time of impact for CC_HIT (unspecified otherwise), code[i] = CC_HIT, CC_MISS or
+ * CC_OVERLAP (a method's other outcomes, e.g. a solver failure, map to CC_MISS). */
+typedef void (*bench_run_fn)(const bench_pair_data *d, size_t lo, size_t hi, double *t, int *code);
+
+typedef struct bench_method {
+    const char *name;
+    const char *note;
+    bench_run_fn run;
+    int single;  /* 1: takes the float inputs (compare with the reference of af, bf) */
+    int compare; /* 1: accuracy columns make sense */
+    double *t;
+    int *code;
+} bench_method;
+
+void bench_pair_data_init(bench_pair_data *d, size_t n);
+/* fills af, bf and the columns from a, b */
+void bench_pair_data_derive(const bench_pair_data *d);
+/* the methods available in this build, with output arrays for pairs pairs; returns how many */
+int bench_methods(bench_method *out, size_t pairs);
+/* high-precision reference of every pair (of the float inputs when single); 0 when this build
+ * has none */
+int bench_reference(const bench_pair_data *d, int single, double *t, int *code);
+
+#endif
