@@ -1,0 +1,119 @@
+"""The pair functions: sweeps, static tests, push-apart and impulses on Circle values.
+
+Every function takes ``precision="double"`` (the C functions) or ``precision="float"`` (their
+single-precision twins with the suffix f: inputs are rounded to float, the answer computed in
+float, and returned as Python floats).
+"""
+
+from __future__ import annotations
+
+import ctypes
+import math
+from typing import Iterable, Optional
+
+from . import _lib
+from ._errors import check
+from ._types import (
+    Circle,
+    Contact,
+    Precision,
+    Vec2,
+    circle_to_c,
+    contact_from_c,
+    contact_to_c,
+    store_circle,
+    vec2,
+)
+
+L = _lib.lib
+byref = ctypes.byref
+
+
+def _f(precision: Precision, name: str):  # the double function or its float twin
+    if precision not in ("double", "float"):
+        raise ValueError(f"precision must be 'double' or 'float', got {precision!r}")
+    return getattr(L, name if precision == "double" else name + "f")
+
+
+def _segment(a: Iterable[float], b: Iterable[float], precision: Precision):
+    v, s = (_lib.cc_vec2, _lib.cc_segment) if precision == "double" else (_lib.cc_vec2f, _lib.cc_segmentf)
+    return s(v(*vec2(a, "segment end a")), v(*vec2(b, "segment end b")))
+
+
+def _contact_struct(precision: Precision):
+    return _lib.cc_contact() if precision == "double" else _lib.cc_contactf()
+
+
+def sweep(a: Circle, b: Circle, t_max: float = math.inf, *, precision: Precision = "double") -> Optional[Contact]:
+    """First contact of two circles moving at constant velocity, within t in [0, t_max].
+
+    Returns a ``Contact`` of kind ``"hit"`` (first touch, approaching), of kind ``"overlap"``
+    (already overlapping at t = 0), or ``None`` when they do not touch by t_max.
+    """
+    ca, cb, out = circle_to_c(a, precision), circle_to_c(b, precision), _contact_struct(precision)
+    code = check(_f(precision, "cc_sweep")(byref(ca), byref(cb), t_max, byref(out)), "sweep")
+    return None if code == _lib.MISS else contact_from_c(code, out)
+
+
+def sweep_segment(
+    c: Circle, a: Iterable[float], b: Iterable[float], t_max: float = math.inf, *, precision: Precision = "double"
+) -> Optional[Contact]:
+    """First contact of a moving circle with the static segment from a to b (a == b: a point)."""
+    cc, seg, out = circle_to_c(c, precision), _segment(a, b, precision), _contact_struct(precision)
+    code = check(_f(precision, "cc_sweep_segment")(byref(cc), byref(seg), t_max, byref(out)), "sweep_segment")
+    return None if code == _lib.MISS else contact_from_c(code, out)
+
+
+def detect_static(a: Circle, b: Circle, *, precision: Precision = "double") -> Optional[Contact]:
+    """The overlap of a and b at t = 0 (touching is not overlapping), or None."""
+    ca, cb, out = circle_to_c(a, precision), circle_to_c(b, precision), _contact_struct(precision)
+    code = check(_f(precision, "cc_detect_static")(byref(ca), byref(cb), byref(out)), "detect_static")
+    return None if code == _lib.MISS else contact_from_c(code, out)
+
+
+def separate(a: Circle, b: Circle, *, precision: Precision = "double") -> bool:
+    """Pushes overlapping circles apart along the centre line until they touch (in place).
+
+    Each moves by a share inversely proportional to its mass. Returns True when they overlapped
+    and were moved, False (nothing changed) otherwise.
+    """
+    ca, cb = circle_to_c(a, precision), circle_to_c(b, precision)
+    code = check(_f(precision, "cc_separate")(byref(ca), byref(cb)), "separate")
+    if code == _lib.OVERLAP:
+        store_circle(a, ca)
+        store_circle(b, cb)
+    return code == _lib.OVERLAP
+
+
+def respond(a: Circle, b: Circle, contact: Contact, restitution: float = 1.0, *, precision: Precision = "double") -> bool:
+    """Applies the collision impulse along contact.normal to the velocities of a and b (in place).
+
+    Positions are not moved: advance the circles to ``contact.t`` first (``Circle.at``).
+    Returns True when an impulse was applied, False when they were not approaching.
+    """
+    ca, cb, cc = circle_to_c(a, precision), circle_to_c(b, precision), contact_to_c(contact, precision)
+    code = check(_f(precision, "cc_respond")(byref(ca), byref(cb), byref(cc), restitution), "respond")
+    if code == _lib.HIT:
+        store_circle(a, ca)
+        store_circle(b, cb)
+    return code == _lib.HIT
+
+
+def respond_segment(c: Circle, contact: Contact, restitution: float = 1.0, *, precision: Precision = "double") -> bool:
+    """Bounces c off an immovable wall whose normal (circle towards wall) is contact.normal."""
+    cc, ct = circle_to_c(c, precision), contact_to_c(contact, precision)
+    code = check(_f(precision, "cc_respond_segment")(byref(cc), byref(ct), restitution), "respond_segment")
+    if code == _lib.HIT:
+        store_circle(c, cc)
+    return code == _lib.HIT
+
+
+def closest_point_on_segment(
+    p: Iterable[float], a: Iterable[float], b: Iterable[float], *, precision: Precision = "double"
+) -> Vec2:
+    """The point of the segment from a to b closest to p."""
+    fn = _f(precision, "cc_closest_point_on_segment")
+    v = _lib.cc_vec2 if precision == "double" else _lib.cc_vec2f
+    seg = _segment(a, b, precision)
+    r = fn(v(*vec2(p, "p")), byref(seg))
+    return (r.x, r.y)

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# CI step: builds the Python wheel (scikit-build-core runs CMake on the repository), installs it
+# into a fresh venv and runs the pytest suite from outside the source tree, so that the installed
+# package, with the C library inside it, is what gets tested.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+out=${CC_PYTHON_OUT:-$root/build/python}  # CI: inside the clone; developers may point it elsewhere
+rm -rf "$out/venv" "$out/wheels" "$out/run"
+mkdir -p "$out/run"
+python3 -m venv "$out/venv"
+py=$out/venv/bin/python
+"$py" -m pip install -q --disable-pip-version-check scikit-build-core numpy pytest hypothesis
+# no build isolation: the venv already has the build backend; the system's cmake is used
+"$py" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps \
+  "$root/bindings/python" -w "$out/wheels"
+"$py" -m pip install -q --disable-pip-version-check --no-deps "$out"/wheels/circlecollide-*.whl
+cd "$out/run"
+"$py" -c 'import circlecollide, sys; print("testing", circlecollide.library_path()); sys.exit("site-packages" not in circlecollide.__file__)'
+CIRCLECOLLIDE_HEADER=$root/include/circlecollide.h \
+  "$py" -m pytest -q -p no:cacheprovider "$root/bindings/python/tests"
