@@ -491,6 +491,69 @@ static void test_random_hex_patches(void)
     }
 }
 
+/* A ball B at rest squeezed between two immovable circles that close in on it from both sides
+ * (velocities (+1, 0) and (-1, 0)): no impulse on B can stop both approaching, so the solve
+ * reports a jam instead of looping or inventing motion of the immovable bodies, which keep their
+ * velocities bit for bit. */
+static void test_jam_between_immovable_bodies(void)
+{
+    scene s;
+    memset(&s, 0, sizeof s);
+    add_body(&s, 0.0, 0.0, 0.0, 0.0, 1.0);
+    add_body(&s, -2.0, 0.0, 1.0, 0.0, 0.0);
+    add_body(&s, 2.0, 0.0, -1.0, 0.0, 0.0);
+    add_contact(&s, 0, 1, -1.0, 0.0);
+    add_contact(&s, 0, 2, 1.0, 0.0);
+    TEST_ASSERT_EQUAL_INT(CC_OK, solve(&s, 1.0, 0.0));
+    TEST_ASSERT_EQUAL_INT(1, s.report.jammed);
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, s.body[1].vel.x);
+    TEST_ASSERT_EQUAL_DOUBLE(-1.0, s.body[2].vel.x);
+    TEST_ASSERT_TRUE(fabs(s.body[0].vel.x) <= 3.0 && s.body[0].vel.y == 0.0);
+}
+
+/* A cluster of one contact is the ordinary pair impulse: the same velocities as cc_respond
+ * (with its mass shares) and cc_respond_segment, to rounding, for random pairs and e. */
+static void test_single_contact_is_the_pair_response(void)
+{
+    int trial;
+    for (trial = 0; trial < 1000; ++trial) {
+        scene s;
+        cc_circle a, b;
+        cc_contact k;
+        double e = uniform(), ang = 6.283185307179586 * uniform();
+        int wall = trial % 3 == 0;
+        memset(&s, 0, sizeof s);
+        memset(&k, 0, sizeof k);
+        a.pos.x = a.pos.y = 0.0;
+        a.radius = b.radius = 1.0;
+        a.vel.x = uniform() * 4.0 - 2.0;
+        a.vel.y = uniform() * 4.0 - 2.0;
+        b.vel.x = uniform() * 4.0 - 2.0;
+        b.vel.y = uniform() * 4.0 - 2.0;
+        a.mass = 0.1 + uniform() * 10.0;
+        b.mass = trial % 7 == 0 ? (double)INFINITY : 0.1 + uniform() * 10.0;
+        k.normal.x = cos(ang);
+        k.normal.y = sin(ang);
+        b.pos.x = 2.0 * k.normal.x;
+        b.pos.y = 2.0 * k.normal.y;
+        add_body(&s, 0.0, 0.0, a.vel.x, a.vel.y, 1.0 / a.mass);
+        if (wall) {
+            add_contact(&s, 0, -1, k.normal.x, k.normal.y);
+            TEST_ASSERT_EQUAL_INT(CC_OK, solve(&s, e, 0.0));
+            (void)cc_respond_segment(&a, &k, e);
+        } else {
+            add_body(&s, b.pos.x, b.pos.y, b.vel.x, b.vel.y, 1.0 / b.mass);
+            add_contact(&s, 0, 1, k.normal.x, k.normal.y);
+            TEST_ASSERT_EQUAL_INT(CC_OK, solve(&s, e, 0.0));
+            (void)cc_respond(&a, &b, &k, e);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-14, b.vel.x, s.body[1].vel.x);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-14, b.vel.y, s.body[1].vel.y);
+        }
+        TEST_ASSERT_DOUBLE_WITHIN(1e-14, a.vel.x, s.body[0].vel.x);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-14, a.vel.y, s.body[0].vel.y);
+    }
+}
+
 /* ---- bad input changes nothing ---------------------------------------------------------- */
 
 static void expect_rejected(const scene *bad, double e, double rest, int code)
@@ -561,6 +624,8 @@ int main(void)
     RUN_TEST(test_order_independence);
     RUN_TEST(test_deterministic);
     RUN_TEST(test_random_hex_patches);
+    RUN_TEST(test_jam_between_immovable_bodies);
+    RUN_TEST(test_single_contact_is_the_pair_response);
     RUN_TEST(test_bad_input);
     return UNITY_END();
 }
