@@ -81,3 +81,24 @@ add_test(NAME package_consumer COMMAND ${CMAKE_COMMAND}
   -P ${CMAKE_CURRENT_SOURCE_DIR}/consumer/run.cmake)
 set_tests_properties(package_consumer PROPERTIES LABELS "packaging" TIMEOUT 300
   RUN_SERIAL ON)
+
+# ---- The README's quick-start example compiles, runs and prints what the README says ----------
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/README.md)
+file(READ ${PROJECT_SOURCE_DIR}/README.md _cc_readme)
+string(REGEX MATCH "\n```c\n(.*)```\n\nIt prints `([^`]*)`" _cc_m "${_cc_readme}")
+if(_cc_m)
+  # the example's own text, up to its closing fence (the regex above is greedy)
+  string(FIND "${CMAKE_MATCH_1}" "\n```" _cc_end)
+  string(SUBSTRING "${CMAKE_MATCH_1}" 0 ${_cc_end} _cc_example)
+  set(_cc_expected "${CMAKE_MATCH_2}")
+  file(CONFIGURE OUTPUT ${CMAKE_CURRENT_BINARY_DIR}/readme_example.c CONTENT "${_cc_example}\n"
+    @ONLY)
+  add_executable(readme_example ${CMAKE_CURRENT_BINARY_DIR}/readme_example.c)
+  target_link_libraries(readme_example PRIVATE circlecollide_static cc_warnings)
+  add_test(NAME readme_example COMMAND readme_example)
+  string(REGEX REPLACE "([][.*+?^$()|\\])" "\\\\\\1" _cc_expected_re "${_cc_expected}")
+  set_tests_properties(readme_example PROPERTIES LABELS "packaging"
+    PASS_REGULAR_EXPRESSION "^${_cc_expected_re}\n$")
+else()
+  message(FATAL_ERROR "README.md: no ```c quick-start block followed by \"It prints `...`\"")
+endif()
