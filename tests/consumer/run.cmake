@@ -40,22 +40,23 @@ if(NOT PKG_CONFIG)
   message(STATUS "pkg-config not installed: the pkg-config consumer is skipped")
   return()
 endif()
+# Without the shared library, -lcirclecollide finds the static one, which needs Libs.private.
+set(static "")
 if(NOT SHARED)
-  message(STATUS "built without the shared library: the pkg-config consumer is skipped")
-  return()
+  set(static --static)
 endif()
 file(GLOB_RECURSE pc ${prefix}/circlecollide.pc)
 list(GET pc 0 pc)
 get_filename_component(pcdir ${pc} DIRECTORY)
 set(ENV{PKG_CONFIG_PATH} ${pcdir})
-execute_process(COMMAND ${PKG_CONFIG} --cflags --libs circlecollide RESULT_VARIABLE rc
+execute_process(COMMAND ${PKG_CONFIG} ${static} --cflags --libs circlecollide RESULT_VARIABLE rc
   OUTPUT_VARIABLE pcflags OUTPUT_STRIP_TRAILING_WHITESPACE)
 if(NOT rc EQUAL 0)
-  message(FATAL_ERROR "pkg-config --cflags --libs circlecollide failed (${rc})")
+  message(FATAL_ERROR "pkg-config ${static} --cflags --libs circlecollide failed (${rc})")
 endif()
 execute_process(COMMAND ${PKG_CONFIG} --variable=libdir circlecollide
   OUTPUT_VARIABLE libdir OUTPUT_STRIP_TRAILING_WHITESPACE)
-message(STATUS "pkg-config --cflags --libs circlecollide: ${pcflags}")
+message(STATUS "pkg-config ${static} --cflags --libs circlecollide: ${pcflags}")
 separate_arguments(pcflags UNIX_COMMAND "${pcflags}")
 separate_arguments(cflags UNIX_COMMAND "${C_FLAGS}")
 run("compile with pkg-config" ${C_COMPILER} ${cflags} ${SOURCE_DIR}/main.c ${pcflags}
