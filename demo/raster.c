@@ -1,0 +1,186 @@
+/* Anti-aliasing by coverage: each shape is a signed distance function; pixels whose centre is
+ * further than half a diagonal inside (outside) the edge are fully covered (untouched), and the
+ * few pixels the edge crosses are sampled on an 8x8 grid, so that even a circle smaller than a
+ * pixel gets its true area. Everything is plain arithmetic: the same input paints the same
+ * bytes. */
+#include "raster.h"
+
+#include <math.h>
+#include <stddef.h>
+
+#define DEMO_SUB 8            /* sub-samples per pixel side on edge pixels */
+#define DEMO_HALF_DIAG 0.7072 /* just above sqrt(2)/2: beyond it a pixel is all in or all out */
+
+typedef struct shape {
+    int kind; /* 0 disc, 1 capsule, 2 ring */
+    double ax, ay, bx, by, r, hw;
+    double dx, dy, inv_len2; /* capsule: b - a and 1/|b - a|^2 (0 for a point) */
+} shape;
+
+static double shape_distance(const shape *s, double x, double y)
+{
+    double px = x - s->ax, py = y - s->ay;
+    switch (s->kind) {
+    case 0:
+        return sqrt(px * px + py * py) - s->r;
+    case 1: {
+        double t = (px * s->dx + py * s->dy) * s->inv_len2;
+        double qx, qy;
+        t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+        qx = px - t * s->dx;
+        qy = py - t * s->dy;
+        return sqrt(qx * qx + qy * qy) - s->hw;
+    }
+    default:
+        return fabs(sqrt(px * px + py * py) - s->r) - s->hw;
+    }
+}
+
+static double coverage(const shape *s, double x0, double y0)
+{
+    double d = shape_distance(s, x0 + 0.5, y0 + 0.5);
+    int i, j, in = 0;
+    if (d <= -DEMO_HALF_DIAG)
+        return 1.0;
+    if (d >= DEMO_HALF_DIAG)
+        return 0.0;
+    for (j = 0; j < DEMO_SUB; ++j)
+        for (i = 0; i < DEMO_SUB; ++i)
+            if (shape_distance(s, x0 + (i + 0.5) / DEMO_SUB, y0 + (j + 0.5) / DEMO_SUB) < 0.0)
+                ++in;
+    return (double)in / (DEMO_SUB * DEMO_SUB);
+}
+
+static void blend(demo_canvas *c, int x, int y, demo_rgb col, double a, demo_blend mode)
+{
+    float *p = c->px + ((size_t)y * (size_t)c->w + (size_t)x) * 3u;
+    float fa = (float)a;
+    if (mode == DEMO_ADD) {
+        p[0] += col.r * fa;
+        p[1] += col.g * fa;
+        p[2] += col.b * fa;
+        p[0] = p[0] > 255.0f ? 255.0f : p[0];
+        p[1] = p[1] > 255.0f ? 255.0f : p[1];
+        p[2] = p[2] > 255.0f ? 255.0f : p[2];
+    } else {
+        p[0] += (col.r - p[0]) * fa;
+        p[1] += (col.g - p[1]) * fa;
+        p[2] += (col.b - p[2]) * fa;
+    }
+}
+
+static int clampi(double v, int lo, int hi)
+{
+    if (!(v > lo)) /* also NaN */
+        return lo;
+    if (v > hi)
+        return hi;
+    return (int)v;
+}
+
+/* Paints the shape inside the pixel box [x0, x1] x [y0, y1] (its bounds plus a margin). */
+static void paint(demo_canvas *c, const shape *s, double x0, double y0, double x1, double y1,
+                  demo_rgb col, double alpha, demo_blend mode)
+{
+    int i0 = clampi(floor(x0 - 1.0), 0, c->w), i1 = clampi(ceil(x1 + 1.0), 0, c->w);
+    int j0 = clampi(floor(y0 - 1.0), 0, c->h), j1 = clampi(ceil(y1 + 1.0), 0, c->h);
+    int i, j;
+    if (!(alpha > 0.0))
+        return;
+    for (j = j0; j < j1; ++j)
+        for (i = i0; i < i1; ++i) {
+            double cov = coverage(s, i, j);
+            if (cov > 0.0)
+                blend(c, i, j, col, alpha * cov, mode);
+        }
+}
+
+demo_rgb demo_rgb_make(float r, float g, float b)
+{
+    demo_rgb c;
+    c.r = r;
+    c.g = g;
+    c.b = b;
+    return c;
+}
+
+void demo_canvas_fill(demo_canvas *c, demo_rgb col)
+{
+    size_t i, n = (size_t)c->w * (size_t)c->h;
+    for (i = 0; i < n; ++i) {
+        c->px[3 * i] = col.r;
+        c->px[3 * i + 1] = col.g;
+        c->px[3 * i + 2] = col.b;
+    }
+}
+
+static double overlap1(double a0, double a1, double p)
+{
+    /* length of [a0, a1) inside the pixel [p, p + 1) */
+    double lo = a0 > p ? a0 : p, hi = a1 < p + 1.0 ? a1 : p + 1.0;
+    return hi > lo ? hi - lo : 0.0;
+}
+
+void demo_canvas_rect(demo_canvas *c, double x0, double y0, double x1, double y1, demo_rgb col,
+                      double alpha, demo_blend mode)
+{
+    int i0 = clampi(floor(x0), 0, c->w), i1 = clampi(ceil(x1), 0, c->w);
+    int j0 = clampi(floor(y0), 0, c->h), j1 = clampi(ceil(y1), 0, c->h);
+    int i, j;
+    for (j = j0; j < j1; ++j) {
+        double cy = overlap1(y0, y1, j);
+        for (i = i0; i < i1; ++i) {
+            double cov = cy * overlap1(x0, x1, i);
+            if (cov > 0.0)
+                blend(c, i, j, col, alpha * cov, mode);
+        }
+    }
+}
+
+void demo_canvas_disc(demo_canvas *c, double cx, double cy, double r, demo_rgb col, double alpha,
+                      demo_blend mode)
+{
+    shape s = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    s.ax = cx;
+    s.ay = cy;
+    s.r = r;
+    paint(c, &s, cx - r, cy - r, cx + r, cy + r, col, alpha, mode);
+}
+
+void demo_canvas_capsule(demo_canvas *c, double ax, double ay, double bx, double by, double hw,
+                         demo_rgb col, double alpha, demo_blend mode)
+{
+    shape s = {1, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    double len2;
+    s.ax = ax;
+    s.ay = ay;
+    s.bx = bx;
+    s.by = by;
+    s.hw = hw;
+    s.dx = bx - ax;
+    s.dy = by - ay;
+    len2 = s.dx * s.dx + s.dy * s.dy;
+    s.inv_len2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
+    paint(c, &s, (ax < bx ? ax : bx) - hw, (ay < by ? ay : by) - hw, (ax > bx ? ax : bx) + hw,
+          (ay > by ? ay : by) + hw, col, alpha, mode);
+}
+
+void demo_canvas_ring(demo_canvas *c, double cx, double cy, double r, double hw, demo_rgb col,
+                      double alpha, demo_blend mode)
+{
+    shape s = {2, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    s.ax = cx;
+    s.ay = cy;
+    s.r = r;
+    s.hw = hw;
+    paint(c, &s, cx - r - hw, cy - r - hw, cx + r + hw, cy + r + hw, col, alpha, mode);
+}
+
+void demo_canvas_to_bytes(const demo_canvas *c, unsigned char *rgb)
+{
+    size_t i, n = (size_t)c->w * (size_t)c->h * 3u;
+    for (i = 0; i < n; ++i) {
+        float v = c->px[i];
+        rgb[i] = (unsigned char)(v <= 0.0f ? 0 : (v >= 255.0f ? 255 : (int)(v + 0.5f)));
+    }
+}
