@@ -1,0 +1,3 @@
+/* DISCRETE mode: placeholder until written. */
+#include "world_internal.h"
+int cc__step_discrete(cc_world *w, double dt) { return cc__step_exact(w, w->now + dt); }

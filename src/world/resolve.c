@@ -1,0 +1,171 @@
+/* Contact resolution: every impulse the world applies goes through cc__world_resolve, which
+ * receives all the contacts of one instant (so that a simultaneous-impact model can replace
+ * the pairwise order used here; see issue 5), and every push-apart of an overlap goes through
+ * cc__world_unoverlap. Both use the public pair functions. */
+#include "world_internal.h"
+
+#include "precision_double.h"
+#include "helpers.inc"
+#include "precision_end.h"
+
+static cc_circle cc__as_circle(const cc__body *b)
+{
+    cc_circle c;
+    c.pos.x = b->px;
+    c.pos.y = b->py;
+    c.vel.x = b->vx;
+    c.vel.y = b->vy;
+    c.radius = b->r;
+    c.mass = b->m;
+    return c;
+}
+
+static void cc__report(cc_world *w, int a, int b, int seg, const cc_contact *k, double impulse)
+{
+    cc_contact_event e;
+    w->stats.collisions++;
+    if (w->on_contact == NULL)
+        return;
+    e.a = a;
+    e.b = b;
+    e.segment = seg;
+    e.t = w->now;
+    e.point = k->point;
+    e.normal = k->normal;
+    e.impulse = impulse;
+    w->on_contact(&e, w->user);
+}
+
+/* Restitution for an approach speed: 0 below rest_speed (the inelastic-collapse remedy). */
+static double cc__restitution_for(const cc_world *w, double approach)
+{
+    return approach < w->rest_speed ? 0.0 : w->restitution;
+}
+
+static void cc__overlap_seen(cc_world *w, double depth)
+{
+    if (depth > w->stats.max_overlap)
+        w->stats.max_overlap = depth;
+}
+
+/* Wall contact of circle c with segment s: normal from the centre to the nearest point. */
+static cc_contact cc__wall_contact(const cc_circle *c, const cc_segment *s)
+{
+    cc_contact k;
+    cc_vec2 q = cc_closest_point_on_segment(c->pos, s);
+    cc_vec2 d = cc__sub(q, c->pos);
+    double dist = cc__length(d);
+    k.t = 0.0;
+    if (dist > 0.0)
+        k.normal = cc__scale(d, 1.0 / dist);
+    else
+        k.normal = cc__unit(cc__v(s->a.y - s->b.y, s->b.x - s->a.x));
+    k.depth = c->radius - dist;
+    k.point = q;
+    return k;
+}
+
+static int cc__resolve_one(cc_world *w, const cc__touch *tc)
+{
+    cc__body *B = CC__ARR(w, cc__body, off_body);
+    cc__body *ba = &B[tc->a];
+    cc_circle ca = cc__as_circle(ba);
+    cc_contact k;
+    double approach;
+    if (tc->b >= 0) {
+        cc__body *bb = &B[tc->b];
+        cc_circle cb = cc__as_circle(bb);
+        cc_vec2 d = cc__sub(cb.pos, ca.pos);
+        double dist = cc__length(d);
+        k.t = 0.0;
+        k.normal = cc__unit(d);
+        k.depth = ca.radius + cb.radius - dist;
+        k.point = cc__advance(ca.pos, k.normal, ca.radius - 0.5 * k.depth);
+        cc__overlap_seen(w, k.depth);
+        approach = -cc__dot(cc__sub(cb.vel, ca.vel), k.normal);
+        if (cc_respond(&ca, &cb, &k, cc__restitution_for(w, approach)) != CC_HIT)
+            return 0;
+        cc__report(w, tc->a, tc->b, -1, &k,
+                   isinf(ca.mass) ? cb.mass * cc__length(cc__sub(cb.vel, cc__v(bb->vx, bb->vy)))
+                                  : ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy))));
+        if (ca.vel.x != ba->vx || ca.vel.y != ba->vy) {
+            ba->vx = ca.vel.x;
+            ba->vy = ca.vel.y;
+            ba->count++;
+        }
+        if (cb.vel.x != bb->vx || cb.vel.y != bb->vy) {
+            bb->vx = cb.vel.x;
+            bb->vy = cb.vel.y;
+            bb->count++;
+        }
+        return 1;
+    }
+    k = cc__wall_contact(&ca, &CC__CARR(w, cc_segment, off_seg)[tc->segment]);
+    cc__overlap_seen(w, k.depth);
+    approach = cc__dot(ca.vel, k.normal);
+    if (isinf(ca.mass) || cc_respond_segment(&ca, &k, cc__restitution_for(w, approach)) != CC_HIT)
+        return 0;
+    cc__report(w, tc->a, -1, tc->segment, &k, ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy))));
+    ba->vx = ca.vel.x;
+    ba->vy = ca.vel.y;
+    ba->count++;
+    return 1;
+}
+
+int cc__world_resolve(cc_world *w, const cc__touch *touch, int n)
+{
+    int i, hits = 0;
+    for (i = 0; i < n; i++)
+        hits += cc__resolve_one(w, &touch[i]);
+    return hits;
+}
+
+int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
+{
+    cc__body *B = CC__ARR(w, cc__body, off_body);
+    cc__body *ba = &B[a];
+    cc_circle ca = cc__as_circle(ba);
+    cc__touch tc;
+    tc.a = a;
+    tc.b = b;
+    tc.segment = seg;
+    if (b >= 0) {
+        cc__body *bb = &B[b];
+        cc_circle cb = cc__as_circle(bb);
+        cc_contact k;
+        if (isinf(ca.mass) && isinf(cb.mass))
+            return 0;
+        if (cc_detect_static(&ca, &cb, &k) != CC_OVERLAP)
+            return 0;
+        w->stats.pairs_tested++;
+        cc__overlap_seen(w, k.depth);
+        if (cc_separate(&ca, &cb) != CC_OVERLAP)
+            return 0;
+        if (ca.pos.x != ba->px || ca.pos.y != ba->py) {
+            ba->px = ca.pos.x;
+            ba->py = ca.pos.y;
+            ba->count++;
+            ba->flags |= CC__MOVED;
+        }
+        if (cb.pos.x != bb->px || cb.pos.y != bb->py) {
+            bb->px = cb.pos.x;
+            bb->py = cb.pos.y;
+            bb->count++;
+            bb->flags |= CC__MOVED;
+        }
+    } else {
+        cc_contact k;
+        if (isinf(ca.mass))
+            return 0;
+        k = cc__wall_contact(&ca, &CC__CARR(w, cc_segment, off_seg)[seg]);
+        if (!(k.depth > 0.0))
+            return 0;
+        cc__overlap_seen(w, k.depth);
+        ba->px -= k.normal.x * k.depth;
+        ba->py -= k.normal.y * k.depth;
+        ba->count++;
+        ba->flags |= CC__MOVED;
+    }
+    (void)cc__world_resolve(w, &tc, 1);
+    return 1;
+}

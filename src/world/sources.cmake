@@ -1,0 +1,12 @@
+# The world's sources (included by src/CMakeLists.txt).
+list(APPEND CC_WORLD_SOURCES
+  world/world.c     # API, def handshake, memory layout, ids
+  world/events.c    # indexed binary heap of predicted events
+  world/grid.c      # hashed uniform cell list
+  world/predict.c   # EXACT: a body's earliest event
+  world/resolve.c   # every impulse and push-apart
+  world/overlap.c   # overlaps made by the caller; the full rebuild
+  world/exact.c     # EXACT stepping
+  world/swept.c     # SWEPT stepping
+  world/discrete.c  # DISCRETE stepping
+)

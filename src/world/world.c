@@ -1,0 +1,343 @@
+/* The world's public API: def handling (the struct_size handshake), the memory layout carved
+ * from the caller's buffer, validation, ids, and the circle/segment accessors. Stepping lives
+ * in exact.c, swept.c and discrete.c. */
+#include "world_internal.h"
+
+#include "precision_double.h"
+#include "helpers.inc"
+#include "precision_end.h"
+
+#define CC__SMALL_WORLD 32          /* up to this many circles: all pairs, no grid */
+#define CC__MAX_CAPACITY (1 << 26)  /* keeps every size computation far from overflow */
+
+/* The def's fields up to and including restitution: what every caller must send. */
+#define CC__DEF_MIN (offsetof(cc_world_def, restitution) + sizeof(double))
+
+CC_API void cc_world_def_init(cc_world_def *def)
+{
+    if (def == NULL)
+        return;
+    memset(def, 0, sizeof *def);
+    def->struct_size = sizeof *def;
+    def->max_circles = 64;
+    def->max_segments = 0;
+    def->mode = CC_MODE_EXACT;
+    def->restitution = 1.0;
+    def->rest_speed = 0.0;
+    def->cell_size = 0.0;
+    def->max_events = 10000000u;
+    def->on_contact = NULL;
+    def->user = NULL;
+}
+
+/* The caller's def over our defaults: fields beyond its struct_size keep their default. */
+static int cc__read_def(const cc_world_def *in, cc_world_def *out)
+{
+    size_t n;
+    if (in == NULL)
+        return CC_ERR_INVALID;
+    if (in->struct_size < CC__DEF_MIN)
+        return CC_ERR_VERSION;
+    cc_world_def_init(out);
+    n = in->struct_size < sizeof *out ? in->struct_size : sizeof *out;
+    memcpy(out, in, n);
+    out->struct_size = sizeof *out;
+    if (out->max_circles < 0 || out->max_circles > CC__MAX_CAPACITY || out->max_segments < 0 ||
+        out->max_segments > CC__MAX_CAPACITY || out->mode < CC_MODE_EXACT || out->mode > CC_MODE_DISCRETE ||
+        !(out->restitution >= 0.0 && out->restitution <= 1.0) ||
+        !(out->rest_speed >= 0.0 && isfinite(out->rest_speed)) ||
+        !(out->cell_size >= 0.0 && isfinite(out->cell_size)) || out->max_events == 0)
+        return CC_ERR_INVALID;
+    return CC_OK;
+}
+
+static size_t cc__align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
+
+/* Hash slots: a power of two >= 2 * max_circles (load <= 1/2), 0 for a world without grid. */
+static uint32_t cc__slots(int max_circles)
+{
+    uint32_t s = 1;
+    if (max_circles <= CC__SMALL_WORLD)
+        return 0;
+    while (s < 2u * (uint32_t)max_circles)
+        s <<= 1;
+    return s;
+}
+
+/* Fills the offsets of w (when not NULL) and returns the total size. */
+static size_t cc__layout(const cc_world_def *d, cc_world *w)
+{
+    size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
+    size_t offs[8], sizes[8];
+    int k;
+    sizes[0] = n * sizeof(cc__body);
+    sizes[1] = n * sizeof(cc__event);
+    sizes[2] = n * sizeof(cc__cell);
+    sizes[3] = n * sizeof(int32_t); /* heap */
+    sizes[4] = n * sizeof(int32_t); /* heap positions */
+    sizes[5] = n * sizeof(int32_t); /* free ids */
+    sizes[6] = (size_t)cc__slots(d->max_circles) * sizeof(int32_t);
+    sizes[7] = (size_t)d->max_segments * sizeof(cc_segment);
+    for (k = 0; k < 8; k++) {
+        offs[k] = off;
+        off += cc__align16(sizes[k]);
+    }
+    if (w != NULL) {
+        w->off_body = offs[0];
+        w->off_ev = offs[1];
+        w->off_cell = offs[2];
+        w->off_heap = offs[3];
+        w->off_hpos = offs[4];
+        w->off_free = offs[5];
+        w->off_slot = offs[6];
+        w->off_seg = offs[7];
+    }
+    return off;
+}
+
+CC_API size_t cc_world_size(const cc_world_def *def)
+{
+    cc_world_def d;
+    if (cc__read_def(def, &d) != CC_OK)
+        return 0;
+    return cc__layout(&d, NULL);
+}
+
+CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *def, int *status)
+{
+    cc_world_def d;
+    cc_world *w;
+    int r = cc__read_def(def, &d);
+    if (r == CC_OK && (memory == NULL || ((uintptr_t)memory & 15u) != 0 || bytes < cc__layout(&d, NULL)))
+        r = CC_ERR_MEMORY;
+    if (status != NULL)
+        *status = r;
+    if (r != CC_OK)
+        return NULL;
+    w = (cc_world *)memory;
+    memset(w, 0, sizeof *w);
+    w->magic = CC__WORLD_MAGIC;
+    w->mode = d.mode;
+    w->max_circles = d.max_circles;
+    w->max_segments = d.max_segments;
+    w->restitution = d.restitution;
+    w->rest_speed = d.rest_speed;
+    w->cell_hint = d.cell_size;
+    w->max_events = d.max_events;
+    w->on_contact = d.on_contact;
+    w->user = d.user;
+    w->now = 0.0;
+    w->use_grid = d.max_circles > CC__SMALL_WORLD;
+    w->slot_mask = cc__slots(d.max_circles) - 1u;
+    w->dirty = 1;
+    w->large_head = -1;
+    w->stats.struct_size = sizeof w->stats;
+    (void)cc__layout(&d, w);
+    {
+        int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
+        int i;
+        for (i = 0; i < d.max_circles; i++)
+            hpos[i] = -1;
+    }
+    if (w->use_grid)
+        cc__grid_clear(w);
+    return w;
+}
+
+static int cc__world_ok(const cc_world *w) { return w != NULL && w->magic == CC__WORLD_MAGIC; }
+
+static int cc__live(const cc_world *w, int id)
+{
+    return id >= 0 && id < w->id_end && (CC__CARR(w, cc__body, off_body)[id].flags & CC__ALIVE);
+}
+
+/* Cell size for the current circles: at least the largest movable diameter (so that touching
+ * circles are never more than one cell apart), with a margin against rounding of the cells;
+ * the caller's cell_size when larger. */
+double cc__world_cell_size(const cc_world *w)
+{
+    const cc__body *b = CC__CARR(w, cc__body, off_body);
+    double dmax = 0.0, any = 0.0, cs;
+    int i;
+    for (i = 0; i < w->id_end; i++) {
+        if (!(b[i].flags & CC__ALIVE))
+            continue;
+        if (!isinf(b[i].m) && 2.0 * b[i].r > dmax)
+            dmax = 2.0 * b[i].r;
+        if (2.0 * b[i].r > any)
+            any = 2.0 * b[i].r;
+    }
+    if (dmax == 0.0)
+        dmax = any > 0.0 ? any : 1.0;
+    cs = dmax * 1.0625;
+    return w->cell_hint > cs ? w->cell_hint : cs;
+}
+
+/* Writes c into body slot id at the current time and files it. */
+static void cc__put(cc_world *w, int id, const cc_circle *c)
+{
+    cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
+    uint32_t count = b->count + 1u;
+    b->px = c->pos.x;
+    b->py = c->pos.y;
+    b->vx = c->vel.x;
+    b->vy = c->vel.y;
+    b->t = w->now;
+    b->r = c->radius;
+    b->m = c->mass;
+    b->count = count;
+    b->flags = CC__ALIVE;
+    if (w->mode != CC_MODE_EXACT)
+        return; /* the other modes rebuild their grid every step */
+    /* wider than the cells allow: the cell size grows, everything is refiled at the next step */
+    if (!w->dirty && w->use_grid && 2.0 * c->radius * 1.0625 > w->cs)
+        w->dirty = 1;
+    if (!w->dirty)
+        cc__settle_body(w, id);
+}
+
+CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
+{
+    int id;
+    if (!cc__world_ok(w) || w->busy || !cc__circle_ok(c))
+        return CC_ERR_INVALID;
+    if (w->n_circles >= w->max_circles)
+        return CC_ERR_FULL;
+    if (w->free_top > 0)
+        id = CC__ARR(w, int32_t, off_free)[--w->free_top];
+    else
+        id = w->id_end++;
+    w->n_circles++;
+    cc__put(w, id, c);
+    return id;
+}
+
+/* Takes body id out of the grid and the queue; its count bump makes others' events stale. */
+static void cc__unfile(cc_world *w, int id)
+{
+    cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
+    if (w->mode == CC_MODE_EXACT && !w->dirty) {
+        cc__heap_remove(w, id);
+        if (w->use_grid || (b->flags & CC__LARGE))
+            cc__grid_remove(w, id);
+    }
+    b->count++;
+    b->flags &= ~CC__LARGE;
+}
+
+CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c)
+{
+    if (!cc__world_ok(w) || w->busy || !cc__circle_ok(c))
+        return CC_ERR_INVALID;
+    if (!cc__live(w, id))
+        return CC_ERR_NOT_FOUND;
+    cc__unfile(w, id);
+    cc__put(w, id, c);
+    return CC_OK;
+}
+
+CC_API int cc_world_remove_circle(cc_world *w, int id)
+{
+    if (!cc__world_ok(w) || w->busy)
+        return CC_ERR_INVALID;
+    if (!cc__live(w, id))
+        return CC_ERR_NOT_FOUND;
+    cc__unfile(w, id);
+    CC__ARR(w, cc__body, off_body)[id].flags = 0;
+    CC__ARR(w, int32_t, off_free)[w->free_top++] = id;
+    w->n_circles--;
+    return CC_OK;
+}
+
+CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s)
+{
+    if (!cc__world_ok(w) || w->busy || !cc__segment_ok(s))
+        return CC_ERR_INVALID;
+    if (w->n_segments >= w->max_segments)
+        return CC_ERR_FULL;
+    CC__ARR(w, cc_segment, off_seg)[w->n_segments] = *s;
+    w->dirty = 1; /* every body may now meet it: predictions are redone at the next step */
+    return w->n_segments++;
+}
+
+static void cc__get(const cc_world *w, int id, cc_circle *out)
+{
+    const cc__body *b = &CC__CARR(w, cc__body, off_body)[id];
+    out->pos.x = cc__bx(b, w->now);
+    out->pos.y = cc__by(b, w->now);
+    out->vel.x = b->vx;
+    out->vel.y = b->vy;
+    out->radius = b->r;
+    out->mass = b->m;
+}
+
+CC_API int cc_world_get_circle(const cc_world *w, int id, cc_circle *out)
+{
+    if (!cc__world_ok(w) || out == NULL)
+        return CC_ERR_INVALID;
+    if (!cc__live(w, id))
+        return CC_ERR_NOT_FOUND;
+    cc__get(w, id, out);
+    return CC_OK;
+}
+
+CC_API int cc_world_get_circles(const cc_world *w, int *ids, cc_circle *out, int capacity)
+{
+    int i, k = 0;
+    if (!cc__world_ok(w) || capacity < 0)
+        return CC_ERR_INVALID;
+    for (i = 0; i < w->id_end; i++) {
+        if (!cc__live(w, i))
+            continue;
+        if (k < capacity) {
+            if (ids != NULL)
+                ids[k] = i;
+            if (out != NULL)
+                cc__get(w, i, &out[k]);
+        }
+        k++;
+    }
+    return k;
+}
+
+CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out)
+{
+    if (!cc__world_ok(w) || out == NULL)
+        return CC_ERR_INVALID;
+    if (id < 0 || id >= w->n_segments)
+        return CC_ERR_NOT_FOUND;
+    *out = CC__CARR(w, cc_segment, off_seg)[id];
+    return CC_OK;
+}
+
+CC_API double cc_world_time(const cc_world *w) { return cc__world_ok(w) ? w->now : (double)NAN; }
+
+CC_API int cc_world_step(cc_world *w, double dt)
+{
+    int r;
+    if (!cc__world_ok(w) || w->busy || !(dt >= 0.0) || !isfinite(dt) || !isfinite(w->now + dt))
+        return CC_ERR_INVALID;
+    w->busy = 1;
+    if (w->mode == CC_MODE_EXACT)
+        r = cc__step_exact(w, w->now + dt);
+    else if (w->mode == CC_MODE_SWEPT)
+        r = cc__step_swept(w, dt);
+    else
+        r = cc__step_discrete(w, dt);
+    w->busy = 0;
+    return r;
+}
+
+CC_API int cc_world_get_stats(const cc_world *w, cc_world_stats *out)
+{
+    size_t n;
+    if (!cc__world_ok(w) || out == NULL)
+        return CC_ERR_INVALID;
+    if (out->struct_size < offsetof(cc_world_stats, collisions) + sizeof(uint64_t))
+        return CC_ERR_VERSION;
+    n = out->struct_size < sizeof *out ? out->struct_size : sizeof *out;
+    /* whole fields only, the caller's struct_size kept */
+    memcpy((unsigned char *)out + sizeof(size_t), (const unsigned char *)&w->stats + sizeof(size_t),
+           n - sizeof(size_t));
+    return CC_OK;
+}

@@ -1,0 +1,148 @@
+/* Private to the world: its memory layout inside the caller's buffer and the functions that the
+ * world's source files share. Never installed.
+ *
+ * Everything lives in the one block given to cc_world_init: the cc_world header first, then
+ * arrays found through byte offsets from the header (never pointers), so that the world holds no
+ * address at all and works the same wherever the caller put it. */
+#ifndef CC_WORLD_INTERNAL_H
+#define CC_WORLD_INTERNAL_H
+
+#include "cc_internal.h"
+
+#include <stdint.h>
+
+/* A circle's state, kept lazily: it is at (px, py) at its own time t and moves at (vx, vy) from
+ * there, so that an event touches only the bodies it involves. 64 bytes: one cache line. */
+typedef struct cc__body {
+    double px, py, vx, vy;
+    double t;      /* the time at which (px, py) holds */
+    double r;      /* radius */
+    double m;      /* mass, +INFINITY for an immovable circle */
+    uint32_t count; /* bumped whenever the trajectory changes: invalidates others' events */
+    int32_t flags;  /* CC__ALIVE, CC__LARGE */
+} cc__body;
+
+#define CC__ALIVE 1
+#define CC__LARGE 2  /* wider than a grid cell (immovable only): kept on the large list */
+#define CC__MOVED 4  /* scratch: moved by an overlap pass, to be re-filed in the grid */
+
+/* Event kinds: what a body's one predicted event is. */
+#define CC__EV_NONE 0
+#define CC__EV_CIRCLE 1  /* partner = circle id, pcount = its count when predicted */
+#define CC__EV_SEGMENT 2 /* partner = segment id */
+#define CC__EV_CROSS 3   /* partner = direction 0:+x 1:-x 2:+y 3:-y */
+
+typedef struct cc__event {
+    double t; /* absolute world time */
+    int32_t kind;
+    int32_t partner;
+    uint32_t pcount;
+    int32_t pad_;
+} cc__event;
+
+/* A body's grid cell and its links in the list of that cell's hash slot (or the large list). */
+typedef struct cc__cell {
+    int64_t cx, cy;
+    int32_t next, prev;
+} cc__cell;
+
+/* Contact handed to the resolver: circle a against circle b (b >= 0) or wall segment. */
+typedef struct cc__touch {
+    int a;
+    int b;       /* the other circle's id, or -1 */
+    int segment; /* the wall's id, or -1 */
+} cc__touch;
+
+struct cc_world {
+    uint32_t magic;
+    int mode;
+    int max_circles, max_segments;
+    double restitution, rest_speed, cell_hint;
+    uint64_t max_events;
+    cc_contact_fn on_contact;
+    void *user;
+
+    double now;       /* world time */
+    double cs, inv_cs; /* cell size in use and its inverse */
+    int use_grid;     /* 0: all pairs (small worlds) */
+    int dirty;        /* grid and events must be rebuilt before the next event */
+    int busy;         /* inside cc_world_step: the callback must not change the world */
+    int n_circles;    /* live circles */
+    int n_segments;
+    int id_end;       /* ids in [0, id_end) have been used at least once */
+    int free_top;     /* removed ids waiting for reuse (a stack) */
+    int heap_n;
+    int large_head;   /* list of CC__LARGE circles */
+    uint32_t slot_mask;
+    cc_world_stats stats;
+
+    /* byte offsets from the header to the arrays */
+    size_t off_body, off_ev, off_cell, off_heap, off_hpos, off_free, off_slot, off_seg;
+};
+
+#define CC__WORLD_MAGIC 0x63637731u /* "ccw1" */
+#define CC__ARR(w, type, off) ((type *)(void *)((unsigned char *)(w) + (w)->off))
+#define CC__CARR(w, type, off) ((const type *)(const void *)((const unsigned char *)(w) + (w)->off))
+
+/* Largest |cell coordinate|: cell bounds stay exact doubles, and no cell index overflows. */
+#define CC__CELL_MAX ((int64_t)1 << 40)
+
+/* ---- world.c ---- */
+/* position of body b at time t (its lazy state carried forward) */
+static inline double cc__bx(const cc__body *b, double t) { return b->px + b->vx * (t - b->t); }
+static inline double cc__by(const cc__body *b, double t) { return b->py + b->vy * (t - b->t); }
+static inline void cc__advance_body(cc__body *b, double t)
+{
+    if (b->t != t) {
+        b->px += b->vx * (t - b->t);
+        b->py += b->vy * (t - b->t);
+        b->t = t;
+    }
+}
+/* Grid cell size for the current circles (>= largest movable diameter). */
+double cc__world_cell_size(const cc_world *w);
+
+/* ---- events.c: indexed binary heap of bodies keyed by (event time, id) ---- */
+void cc__heap_update(cc_world *w, int id); /* insert or move to its place */
+void cc__heap_remove(cc_world *w, int id);
+int cc__heap_top(const cc_world *w); /* -1 when empty */
+
+/* ---- grid.c: hashed uniform cell list ---- */
+void cc__grid_clear(cc_world *w);
+void cc__grid_insert(cc_world *w, int id); /* files the body by its position at w->now */
+void cc__grid_remove(cc_world *w, int id);
+void cc__grid_move(cc_world *w, int id, int dir); /* a cell crossing */
+int64_t cc__grid_coord(const cc_world *w, double x);
+uint32_t cc__grid_slot(const cc_world *w, int64_t cx, int64_t cy);
+
+/* ---- predict.c: a body's earliest event (EXACT) ---- */
+void cc__predict(cc_world *w, int id);
+/* re-predicts every movable body that could meet body id (its neighbourhood) */
+void cc__predict_neighbours(cc_world *w, int id);
+/* True when approach speed vn (> 0: closing) is a collision: faster than the rounding of the
+ * bodies' speeds (their sum is `speeds`), and not a resting contact, which approaches at less
+ * than rest_speed * 2^-20 (the sequence of ever smaller impulses that pairwise resolution of
+ * bodies pressed together would otherwise produce ends there). */
+static inline int cc__approaching(const cc_world *w, double vn, double speeds)
+{
+    return vn > 0x1p-40 * speeds && vn > w->rest_speed * 0x1p-20;
+}
+
+/* ---- resolve.c: every impulse goes through here ---- */
+/* Resolves the contacts of touch[0..n) that happen at world time w->now; every body named is at
+ * w->now already. Applies the impulses (restitution, rest_speed), reports each to the
+ * callback, counts collisions and records the overlap at contact. Does not re-predict: the
+ * caller bumps the counts and re-predicts the bodies named. Returns the impulses applied. */
+int cc__world_resolve(cc_world *w, const cc__touch *touch, int n);
+/* Pushes apart body a and circle b (b >= 0) or segment seg when they overlap, then resolves the
+ * contact if they approach. Both are at w->now. Returns 1 when anything moved. */
+int cc__world_unoverlap(cc_world *w, int a, int b, int seg);
+
+/* ---- overlap.c / exact.c / swept.c / discrete.c ---- */
+void cc__rebuild(cc_world *w); /* grid, overlaps and (EXACT) every prediction, at w->now */
+void cc__settle_body(cc_world *w, int id); /* a body added or set: overlaps and predictions */
+int cc__step_exact(cc_world *w, double t_end);
+int cc__step_swept(cc_world *w, double dt);
+int cc__step_discrete(cc_world *w, double dt);
+
+#endif

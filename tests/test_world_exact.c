@@ -1,0 +1,461 @@
+/* EXACT mode: every collision in time order. Closed-form scenes (a head-on pair, Galperin's
+ * billiard), conservation laws and the no-overlap/no-escape invariants over many collisions,
+ * determinism independent of addresses, tunnelling, overlaps made by the caller, and the
+ * inelastic-collapse remedies (rest_speed and the event cap). */
+#include "unity.h"
+
+#include "test_world_util.h"
+
+#include <stdio.h>
+
+void setUp(void) {}
+void tearDown(void) {}
+
+/* Documented overlap tolerance: ~1e-12 of the radius sum for these scenes (coordinates within
+ * ~1e3 radii of the origin); the tests allow 1e-10. */
+#define TW_OVERLAP_TOL 1e-10
+
+static cc_circle circle(double x, double y, double vx, double vy, double r, double m)
+{
+    cc_circle c;
+    c.pos.x = x;
+    c.pos.y = y;
+    c.vel.x = vx;
+    c.vel.y = vy;
+    c.radius = r;
+    c.mass = m;
+    return c;
+}
+
+static cc_segment segment(double ax, double ay, double bx, double by)
+{
+    cc_segment s;
+    s.a.x = ax;
+    s.a.y = ay;
+    s.b.x = bx;
+    s.b.y = by;
+    return s;
+}
+
+static cc_world *world(tw_mem *m, int cap, int segs, double e)
+{
+    cc_world_def d;
+    cc_world_def_init(&d);
+    d.max_circles = cap;
+    d.max_segments = segs;
+    d.restitution = e;
+    return tw_make(m, &d, 0);
+}
+
+static cc_world_stats stats(const cc_world *w)
+{
+    cc_world_stats s;
+    s.struct_size = sizeof s;
+    (void)cc_world_get_stats(w, &s);
+    return s;
+}
+
+static cc_contact_event g_events[8];
+static int g_n;
+static void record(const cc_contact_event *e, void *user)
+{
+    (void)user;
+    if (g_n < 8)
+        g_events[g_n] = *e;
+    g_n++;
+}
+
+/* Two unit circles at x = 0 and x = 10 moving towards each other at speed 1: the gap of 8
+ * closes at relative speed 2, so they touch at t = 4 at x = 4 and x = 6, contact point (5, 0),
+ * normal +x. Masses 1 and 3, e = 1: va' = ((1-3) 1 + 2*3*(-1)) / 4 = -2,
+ * vb' = ((3-1)(-1) + 2*1*1) / 4 = 0; impulse = 1 * |(-2) - 1| = 3. */
+static void test_head_on_pair(void)
+{
+    cc_world_def d;
+    tw_mem m;
+    cc_world *w;
+    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(10, 0, -1, 0, 1, 3), got;
+    cc_world_def_init(&d);
+    d.max_circles = 2;
+    d.on_contact = record;
+    w = tw_make(&m, &d, 0);
+    g_n = 0;
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &a));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &b));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 3.0));
+    TEST_ASSERT_EQUAL_INT(0, g_n);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 2.0));
+    TEST_ASSERT_EQUAL_INT(1, g_n);
+    TEST_ASSERT_EQUAL_INT(0, g_events[0].a);
+    TEST_ASSERT_EQUAL_INT(1, g_events[0].b);
+    TEST_ASSERT_EQUAL_INT(-1, g_events[0].segment);
+    TEST_ASSERT_EQUAL_DOUBLE(4.0, g_events[0].t);
+    TEST_ASSERT_EQUAL_DOUBLE(5.0, g_events[0].point.x);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, g_events[0].point.y);
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, g_events[0].normal.x);
+    TEST_ASSERT_EQUAL_DOUBLE(3.0, g_events[0].impulse);
+    /* at t = 5: a at 4 - 2 = 2, b still at 6 */
+    TEST_ASSERT_EQUAL_DOUBLE(5.0, cc_world_time(w));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(2.0, got.pos.x);
+    TEST_ASSERT_EQUAL_DOUBLE(-2.0, got.vel.x);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(6.0, got.pos.x);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, got.vel.x);
+    TEST_ASSERT_EQUAL_UINT64(1, stats(w).collisions);
+    tw_free(&m);
+}
+
+/* A wall: a circle of radius 1 at x = 5 moving at -2 towards the segment x = 0 touches it at
+ * t = (5 - 1) / 2 = 2, point (0, 0), normal -x; impulse m |dv| = 1 * 4. */
+static void test_wall_bounce(void)
+{
+    cc_world_def d;
+    tw_mem m;
+    cc_world *w;
+    cc_circle a = circle(5, 0, -2, 0, 1, 1), got;
+    cc_segment s = segment(0, -5, 0, 5);
+    cc_world_def_init(&d);
+    d.max_circles = 1;
+    d.max_segments = 1;
+    d.on_contact = record;
+    w = tw_make(&m, &d, 0);
+    g_n = 0;
+    (void)cc_world_add_segment(w, &s);
+    (void)cc_world_add_circle(w, &a);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 3.0));
+    TEST_ASSERT_EQUAL_INT(1, g_n);
+    TEST_ASSERT_EQUAL_INT(-1, g_events[0].b);
+    TEST_ASSERT_EQUAL_INT(0, g_events[0].segment);
+    TEST_ASSERT_EQUAL_DOUBLE(2.0, g_events[0].t);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, g_events[0].point.x);
+    TEST_ASSERT_EQUAL_DOUBLE(-1.0, g_events[0].normal.x);
+    TEST_ASSERT_EQUAL_DOUBLE(4.0, g_events[0].impulse);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(3.0, got.pos.x); /* back from x = 1 at speed 2 for 1 */
+    tw_free(&m);
+}
+
+/* Galperin's billiard: a light circle between a wall and a heavy circle (mass ratio 100^k)
+ * moving towards it, e = 1, collides floor(pi 10^k) times in all, counting the wall hits. */
+static uint64_t galperin(double ratio)
+{
+    tw_mem m;
+    cc_world *w = world(&m, 2, 1, 1.0);
+    cc_segment s = segment(0, -10, 0, 10);
+    cc_circle light = circle(2, 0, 0, 0, 1, 1), heavy = circle(5, 0, -1, 0, 1, ratio);
+    uint64_t n;
+    (void)cc_world_add_segment(w, &s);
+    (void)cc_world_add_circle(w, &light);
+    (void)cc_world_add_circle(w, &heavy);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1e3));
+    n = stats(w).collisions;
+    tw_free(&m);
+    return n;
+}
+
+static void test_galperin_pi(void)
+{
+    TEST_ASSERT_EQUAL_UINT64(3, galperin(1.0));
+    TEST_ASSERT_EQUAL_UINT64(31, galperin(1e2));
+    TEST_ASSERT_EQUAL_UINT64(314, galperin(1e4));
+    TEST_ASSERT_EQUAL_UINT64(3141, galperin(1e6));
+    TEST_ASSERT_EQUAL_UINT64(314159, galperin(1e10));
+}
+
+/* A gas in a box, e = 1: kinetic energy conserved to rounding, nothing escapes, no pair
+ * overlaps beyond the tolerance, at every one of 20 steps. Momentum is not conserved (walls). */
+static void test_box_gas_invariants(void)
+{
+    enum { N = 400 };
+    tw_mem m;
+    cc_world *w = world(&m, N, 4, 1.0);
+    static cc_circle c[N];
+    double L = tw_fill_box(w, N, 1.0, 0.3, 11), e0;
+    int k;
+    TEST_ASSERT_EQUAL_INT(N, cc_world_get_circles(w, NULL, c, N));
+    e0 = tw_sum(c, N).energy;
+    for (k = 0; k < 20; k++) {
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 10.0));
+        TEST_ASSERT_EQUAL_INT(N, cc_world_get_circles(w, NULL, c, N));
+        TEST_ASSERT_DOUBLE_WITHIN(1e-12 * e0, e0, tw_sum(c, N).energy);
+        TEST_ASSERT_EQUAL_INT(0, tw_escapes(c, N, L, TW_OVERLAP_TOL));
+        TEST_ASSERT_TRUE(tw_max_rel_overlap(c, N, 1.0) < TW_OVERLAP_TOL);
+    }
+    /* 400 circles at speed ~0.8 and mean free path ~3 radii: thousands of collisions */
+    TEST_ASSERT_TRUE(stats(w).collisions > 20000);
+    TEST_ASSERT_TRUE(stats(w).max_overlap < 2.0 * TW_OVERLAP_TOL);
+    printf("box gas: %llu collisions, %llu events, max overlap %.3g\n", (unsigned long long)stats(w).collisions,
+           (unsigned long long)stats(w).events, stats(w).max_overlap);
+    tw_free(&m);
+}
+
+/* Without walls momentum is conserved too: circles of different masses and radii thrown at a
+ * common centre collide many times and fly apart. */
+static void test_momentum_and_energy(void)
+{
+    enum { N = 300 };
+    tw_mem m;
+    cc_world *w = world(&m, N, 0, 1.0);
+    static cc_circle c[N];
+    uint64_t seed = 5;
+    tw_totals t0, t1;
+    int i;
+    for (i = 0; i < N; i++) {
+        double ang = 6.283185307179586 * tw_rand(&seed), rad = 30.0 + 30.0 * tw_rand(&seed);
+        cc_circle k = circle(rad * cos(ang), rad * sin(ang), -cos(ang) * (1 + tw_rand(&seed)),
+                             -sin(ang) * (1 + tw_rand(&seed)), 0.5 + 0.5 * tw_rand(&seed), 0.5 + 4 * tw_rand(&seed));
+        (void)cc_world_add_circle(w, &k);
+    }
+    TEST_ASSERT_EQUAL_INT(N, cc_world_get_circles(w, NULL, c, N));
+    TEST_ASSERT_TRUE(tw_max_rel_overlap(c, N, 1.0) > 0.0 || 1); /* random placement may overlap */
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.0)); /* overlaps of the placement resolved */
+    TEST_ASSERT_EQUAL_INT(N, cc_world_get_circles(w, NULL, c, N));
+    t0 = tw_sum(c, N);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 200.0));
+    TEST_ASSERT_EQUAL_INT(N, cc_world_get_circles(w, NULL, c, N));
+    t1 = tw_sum(c, N);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12 * t0.energy, t0.energy, t1.energy);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-11 * t0.energy, t0.px, t1.px);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-11 * t0.energy, t0.py, t1.py);
+    TEST_ASSERT_TRUE(tw_max_rel_overlap(c, N, 1.0) < TW_OVERLAP_TOL);
+    TEST_ASSERT_TRUE(stats(w).collisions > 1000);
+    tw_free(&m);
+}
+
+/* Runs a box gas for a while and returns its final circles in c. */
+static void run_box(cc_world *w, cc_circle *c, int n)
+{
+    int k;
+    (void)tw_fill_box(w, n, 1.0, 0.35, 3);
+    for (k = 0; k < 5; k++)
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 7.0));
+    TEST_ASSERT_EQUAL_INT(n, cc_world_get_circles(w, NULL, c, n));
+}
+
+/* Identical input, identical output, bit for bit: twice in one place, in another buffer at a
+ * different address, and after the world was moved (memcpy) to other memory midway. */
+static void test_deterministic_and_address_free(void)
+{
+    enum { N = 200 };
+    static cc_circle c1[N], c2[N], c3[N], c4[N];
+    cc_world_def d;
+    tw_mem m1, m2, m3;
+    cc_world *w;
+    unsigned char *moved_raw, *moved;
+    cc_world_def_init(&d);
+    d.max_circles = N;
+    d.max_segments = 4;
+    run_box(tw_make(&m1, &d, 0), c1, N);
+    run_box(tw_make(&m2, &d, 0), c2, N);
+    run_box(tw_make(&m3, &d, 48), c3, N);
+    TEST_ASSERT_EQUAL_MEMORY(c1, c2, sizeof c1);
+    TEST_ASSERT_EQUAL_MEMORY(c1, c3, sizeof c1);
+    TEST_ASSERT_EQUAL_UINT64(stats((cc_world *)(void *)m1.mem).events, stats((cc_world *)(void *)m3.mem).events);
+    tw_free(&m1);
+    tw_free(&m2);
+    tw_free(&m3);
+    /* relocation: steps 0-2 in one buffer, 3-4 in a copy of it elsewhere */
+    w = tw_make(&m1, &d, 0);
+    (void)tw_fill_box(w, N, 1.0, 0.35, 3);
+    {
+        int k;
+        for (k = 0; k < 3; k++)
+            (void)cc_world_step(w, 7.0);
+        moved_raw = (unsigned char *)malloc(m1.bytes + 64);
+        moved = moved_raw + ((16u - ((size_t)moved_raw & 15u)) & 15u) + 32;
+        memcpy(moved, m1.mem, m1.bytes);
+        memset(m1.mem, 0, m1.bytes); /* the old copy is gone */
+        w = (cc_world *)(void *)moved;
+        for (k = 3; k < 5; k++)
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 7.0));
+        TEST_ASSERT_EQUAL_INT(N, cc_world_get_circles(w, NULL, c4, N));
+        TEST_ASSERT_EQUAL_MEMORY(c1, c4, sizeof c1);
+        free(moved_raw);
+    }
+    tw_free(&m1);
+}
+
+/* A bullet (speed 1e4, radius 0.1: it travels 1e5 radii in a step of 1) meets a thin wall and,
+ * in a second world, a small circle; EXACT never lets it through. */
+static void test_no_tunnelling(void)
+{
+    tw_mem m;
+    cc_world *w = world(&m, 1, 1, 1.0);
+    cc_segment wall = segment(10, -1, 10, 1);
+    cc_circle bullet = circle(0, 0, 1e4, 0, 0.1, 1), got;
+    (void)cc_world_add_segment(w, &wall);
+    (void)cc_world_add_circle(w, &bullet);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    /* hits at x = 9.9 (t = 9.9e-4), comes back: x = 9.9 - 1e4 (1 - 9.9e-4) */
+    TEST_ASSERT_EQUAL_DOUBLE(-1e4, got.vel.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-6, 9.9 - 1e4 * (1.0 - 9.9e-4), got.pos.x);
+    tw_free(&m);
+
+    w = world(&m, 2, 0, 1.0);
+    {
+        cc_circle target = circle(10, 0, 0, 0, 0.1, 1);
+        (void)cc_world_add_circle(w, &bullet);
+        (void)cc_world_add_circle(w, &target);
+    }
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));
+    /* equal masses head-on: the bullet stops at x = 9.8, the target takes its velocity */
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, got.vel.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 9.8, got.pos.x);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(1e4, got.vel.x);
+    tw_free(&m);
+}
+
+/* Immovable circles are obstacles: a circle bounces off a fixed one and the fixed one stays. */
+static void test_immovable_obstacle(void)
+{
+    tw_mem m;
+    cc_world *w = world(&m, 2, 0, 1.0);
+    cc_circle a = circle(0, 0, 1, 0, 1, 1), post = circle(5, 0, 0, 0, 2, INFINITY), got;
+    (void)cc_world_add_circle(w, &a);
+    (void)cc_world_add_circle(w, &post);
+    /* touch at x = 5 - 3 = 2, t = 2; back to x = 0 at t = 4 */
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 4.0));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(-1.0, got.vel.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.0, got.pos.x);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(5.0, got.pos.x);
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, got.vel.x);
+    tw_free(&m);
+}
+
+/* A circle set on top of another is pushed apart at once (shares inverse to mass) and the
+ * pair, approaching, collides; set_circle keeps the id. */
+static void test_overlap_after_set(void)
+{
+    tw_mem m;
+    cc_world *w = world(&m, 2, 0, 1.0);
+    cc_circle a = circle(0, 0, 0, 0, 1, 1), b = circle(10, 0, 0, 0, 1, 1), got_a, got_b;
+    (void)cc_world_add_circle(w, &a);
+    (void)cc_world_add_circle(w, &b);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));
+    b = circle(1, 0, -1, 0, 1, 1); /* depth 1: each moves 0.5 */
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle(w, 1, &b));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got_a));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &got_b));
+    TEST_ASSERT_EQUAL_DOUBLE(-0.5, got_a.pos.x);
+    TEST_ASSERT_EQUAL_DOUBLE(1.5, got_b.pos.x);
+    TEST_ASSERT_EQUAL_DOUBLE(-1.0, got_a.vel.x); /* b approached: velocities exchanged */
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, got_b.vel.x);
+    TEST_ASSERT_EQUAL_UINT64(1, stats(w).collisions);
+    tw_free(&m);
+}
+
+/* Removing a circle mid-flight: nothing collides with it afterwards. */
+static void test_remove_mid_flight(void)
+{
+    tw_mem m;
+    cc_world *w = world(&m, 3, 0, 1.0);
+    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(10, 0, 0, 0, 1, 1), got;
+    (void)cc_world_add_circle(w, &a);
+    (void)cc_world_add_circle(w, &b);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 5.0)); /* contact would be at t = 8 */
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_remove_circle(w, 1));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 10.0));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(15.0, got.pos.x);
+    TEST_ASSERT_EQUAL_UINT64(0, stats(w).collisions);
+    tw_free(&m);
+}
+
+/* Inelastic collapse made certain: an immovable circle moving at speed 1 squeezes a light
+ * circle against a wall; the gap closes in finite time, so the bounces would never end. The
+ * event cap stops each step; the world stays consistent and its time is that of the last event,
+ * short of the step's end (wall at x = 0, the pusher touches the squeezed circle's other side
+ * at x = 2 + 1 at t = 2). */
+static void test_event_cap_stops_collapse(void)
+{
+    cc_world_def d;
+    tw_mem m;
+    cc_world *w;
+    cc_segment s = segment(0, -10, 0, 10);
+    cc_circle light = circle(1.5, 0, 1, 0, 1, 1), pusher = circle(6, 0, -1, 0, 2, INFINITY), got;
+    double t;
+    cc_world_def_init(&d);
+    d.max_circles = 2;
+    d.max_segments = 1;
+    d.restitution = 0.5;
+    d.max_events = 1000;
+    w = tw_make(&m, &d, 0);
+    (void)cc_world_add_segment(w, &s);
+    (void)cc_world_add_circle(w, &light);
+    (void)cc_world_add_circle(w, &pusher);
+    TEST_ASSERT_EQUAL_INT(CC_EVENT_LIMIT, cc_world_step(w, 10.0));
+    t = cc_world_time(w);
+    TEST_ASSERT_TRUE(t > 0.0 && t <= 2.0 + 1e-12);
+    TEST_ASSERT_EQUAL_UINT64(1000, stats(w).events);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_TRUE(got.pos.x >= 1.0 - 1e-9);
+    TEST_ASSERT_EQUAL_INT(CC_EVENT_LIMIT, cc_world_step(w, 10.0)); /* another call continues */
+    TEST_ASSERT_EQUAL_UINT64(2000, stats(w).events);
+    TEST_ASSERT_TRUE(cc_world_time(w) >= t);
+    tw_free(&m);
+}
+
+/* rest_speed: approaches slower than it are perfectly inelastic. Three equal circles in a row,
+ * e = 0.05 (below 7 - 4 sqrt 3, where three bodies collapse): with rest_speed the middle one
+ * stops bouncing after a few collisions, and a step completes. */
+static uint64_t three_in_a_row(double rest_speed)
+{
+    cc_world_def d;
+    tw_mem m;
+    cc_world *w;
+    cc_circle c;
+    uint64_t n;
+    int r;
+    cc_world_def_init(&d);
+    d.max_circles = 3;
+    d.restitution = 0.05;
+    d.rest_speed = rest_speed;
+    d.max_events = 100000;
+    w = tw_make(&m, &d, 0);
+    c = circle(0, 0, 1, 0, 1, 1);
+    (void)cc_world_add_circle(w, &c);
+    c = circle(3, 0, 0, 0, 1, 1);
+    (void)cc_world_add_circle(w, &c);
+    c = circle(6, 0, -1, 0, 1, 1);
+    (void)cc_world_add_circle(w, &c);
+    r = cc_world_step(w, 100.0);
+    TEST_ASSERT_TRUE(r == CC_OK || r == CC_EVENT_LIMIT);
+    n = stats(w).collisions;
+    printf("three in a row, rest_speed %g: %llu collisions, %s\n", rest_speed, (unsigned long long)n,
+           cc_result_string(r));
+    if (rest_speed > 0.0)
+        TEST_ASSERT_EQUAL_INT(CC_OK, r);
+    tw_free(&m);
+    return n;
+}
+
+static void test_rest_speed_ends_collapse(void)
+{
+    uint64_t without = three_in_a_row(0.0), with = three_in_a_row(1e-3);
+    TEST_ASSERT_TRUE(with < 100);
+    TEST_ASSERT_TRUE(with < without);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_head_on_pair);
+    RUN_TEST(test_wall_bounce);
+    RUN_TEST(test_galperin_pi);
+    RUN_TEST(test_box_gas_invariants);
+    RUN_TEST(test_momentum_and_energy);
+    RUN_TEST(test_deterministic_and_address_free);
+    RUN_TEST(test_no_tunnelling);
+    RUN_TEST(test_immovable_obstacle);
+    RUN_TEST(test_overlap_after_set);
+    RUN_TEST(test_remove_mid_flight);
+    RUN_TEST(test_event_cap_stops_collapse);
+    RUN_TEST(test_rest_speed_ends_collapse);
+    return UNITY_END();
+}
