@@ -1,0 +1,362 @@
+//! Exact continuous collision of moving circles: a safe Rust API over the circlecollide C library.
+//!
+//! Value types ([`Vec2`], [`Circle`], [`Segment`], [`Contact`]) are generic over the precision,
+//! `f64` (the default) or `f32` (the C library's single-precision twins). Every call returns a
+//! [`Result`] whose [`Error`] carries the library's own message.
+//!
+//! ```
+//! use circlecollide::{sweep, respond, Circle, ContactKind, Vec2};
+//! let a = Circle::new(Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), 1.0);
+//! let b = Circle::new(Vec2::new(10.0, 0.0), Vec2::new(-1.0, 0.0), 1.0);
+//! let c = sweep(&a, &b, 10.0).unwrap().expect("they meet");
+//! assert_eq!((c.kind, c.t), (ContactKind::Hit, 4.0)); // a gap of 8 closing at speed 2
+//! let (mut a, mut b) = (a.at(c.t), b.at(c.t));
+//! assert!(respond(&mut a, &mut b, &c, 1.0).unwrap()); // elastic, equal masses: they swap
+//! assert_eq!((a.vel.x, b.vel.x), (-1.0, 1.0));
+//! ```
+//!
+//! [`World`] (when the C library has it) simulates many circles and walls in memory it owns.
+
+use core::ffi::{c_int, CStr};
+use core::fmt;
+use core::mem::{offset_of, size_of};
+
+pub use circlecollide_sys as sys;
+
+mod batch;
+pub use batch::{sweep_many, Columns};
+
+#[cfg(cc_has_world)]
+mod world;
+#[cfg(cc_has_world)]
+pub use world::{CircleId, ContactEvent, Mode, Other, SegmentId, Stats, StepOutcome, World, WorldDef};
+
+// ---- errors ------------------------------------------------------------------------------
+
+/// What kind of error the library reported.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// `CC_ERR_INVALID`: NaN or infinite input, radius or mass <= 0, restitution outside [0, 1], ...
+    Invalid,
+    /// `CC_ERR_NOT_FOUND`: a world id not in use.
+    NotFound,
+    /// `CC_ERR_FULL`: the world holds as many circles (or walls) as it can.
+    Full,
+    /// `CC_ERR_MEMORY`: the world's memory is too small or misaligned.
+    Memory,
+    /// `CC_ERR_VERSION`: a struct_size the library does not know.
+    Version,
+    /// A code newer than these bindings.
+    Other,
+}
+
+/// An error code of the C library, with its message.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub struct Error {
+    code: c_int,
+}
+
+impl Error {
+    /// The C result code (negative).
+    pub fn code(&self) -> i32 {
+        self.code
+    }
+
+    pub fn kind(&self) -> ErrorKind {
+        match self.code {
+            sys::CC_ERR_INVALID => ErrorKind::Invalid,
+            sys::CC_ERR_NOT_FOUND => ErrorKind::NotFound,
+            sys::CC_ERR_FULL => ErrorKind::Full,
+            sys::CC_ERR_MEMORY => ErrorKind::Memory,
+            sys::CC_ERR_VERSION => ErrorKind::Version,
+            _ => ErrorKind::Other,
+        }
+    }
+
+    /// The library's own text for the code (cc_result_string).
+    pub fn message(&self) -> &'static str {
+        result_string(self.code)
+    }
+}
+
+impl fmt::Debug for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Error({}: {})", self.code, self.message())
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.message())
+    }
+}
+
+impl std::error::Error for Error {}
+
+pub type Result<T> = core::result::Result<T, Error>;
+
+pub(crate) fn check(code: c_int) -> Result<c_int> {
+    if code < 0 {
+        Err(Error { code })
+    } else {
+        Ok(code)
+    }
+}
+
+/// The library's static name and explanation of a result code.
+pub fn result_string(code: i32) -> &'static str {
+    // SAFETY: cc_result_string returns a static NUL-terminated string for every code.
+    let p = unsafe { sys::cc_result_string(code) };
+    if p.is_null() {
+        return "unknown result code";
+    }
+    unsafe { CStr::from_ptr(p) }.to_str().unwrap_or("unknown result code")
+}
+
+/// (major, minor, patch) of the library linked.
+pub fn version() -> (u32, u32, u32) {
+    let v = unsafe { sys::cc_version() };
+    (v >> 16, (v >> 8) & 0xff, v & 0xff)
+}
+
+/// True when the library linked has the major version of the declarations (always, when
+/// statically linked by this crate's build; the check matters for dynamic loading).
+pub fn version_matches() -> bool {
+    version().0 == sys::CC_VERSION_MAJOR
+}
+
+// ---- value types -------------------------------------------------------------------------
+
+/// A point or vector. `#[repr(C)]`: the same layout as `cc_vec2` (f64) and `cc_vec2f` (f32).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Vec2<T = f64> {
+    pub x: T,
+    pub y: T,
+}
+
+impl<T> Vec2<T> {
+    pub const fn new(x: T, y: T) -> Self {
+        Vec2 { x, y }
+    }
+}
+
+/// A circle moving at constant velocity from `pos` at t = 0. `mass = INFINITY` is immovable.
+/// `#[repr(C)]`: the same layout as `cc_circle` / `cc_circlef`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Circle<T = f64> {
+    pub pos: Vec2<T>,
+    pub vel: Vec2<T>,
+    pub radius: T,
+    pub mass: T,
+}
+
+impl<T: Real> Circle<T> {
+    /// A circle of mass 1.
+    pub fn new(pos: Vec2<T>, vel: Vec2<T>, radius: T) -> Self {
+        Circle { pos, vel, radius, mass: T::ONE }
+    }
+
+    pub fn with_mass(self, mass: T) -> Self {
+        Circle { mass, ..self }
+    }
+
+    /// An immovable obstacle (mass = +infinity).
+    pub fn immovable(self) -> Self {
+        self.with_mass(T::INFINITY)
+    }
+
+    /// A copy moved along its velocity to time t.
+    pub fn at(&self, t: T) -> Self {
+        Circle { pos: Vec2::new(self.pos.x + self.vel.x * t, self.pos.y + self.vel.y * t), ..*self }
+    }
+}
+
+/// A static wall from `a` to `b` (a == b: a point obstacle).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Segment<T = f64> {
+    pub a: Vec2<T>,
+    pub b: Vec2<T>,
+}
+
+impl<T> Segment<T> {
+    pub const fn new(a: Vec2<T>, b: Vec2<T>) -> Self {
+        Segment { a, b }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ContactKind {
+    /// First touch at `t`, the bodies approaching.
+    Hit,
+    /// Already overlapping at t = 0 (`depth` > 0).
+    Overlap,
+}
+
+/// A contact: time, point, unit normal (from a towards b or the wall) and penetration depth.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Contact<T = f64> {
+    pub kind: ContactKind,
+    pub t: T,
+    pub point: Vec2<T>,
+    pub normal: Vec2<T>,
+    pub depth: T,
+}
+
+/// The C contact's layout (`cc_contact` / `cc_contactf`).
+#[doc(hidden)]
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct RawContact<T> {
+    t: T,
+    point: Vec2<T>,
+    normal: Vec2<T>,
+    depth: T,
+}
+
+impl<T: Real> RawContact<T> {
+    fn of(c: &Contact<T>) -> Self {
+        RawContact { t: c.t, point: c.point, normal: c.normal, depth: c.depth }
+    }
+    fn into_contact(self, code: c_int) -> Option<Contact<T>> {
+        let kind = match code {
+            sys::CC_HIT => ContactKind::Hit,
+            sys::CC_OVERLAP => ContactKind::Overlap,
+            _ => return None,
+        };
+        Some(Contact { kind, t: self.t, point: self.point, normal: self.normal, depth: self.depth })
+    }
+}
+
+// The generic types are passed to C by pointer cast: prove at compile time that they have the
+// C structs' layout field for field.
+macro_rules! same_layout {
+    ($ours:ty, $c:ty, $($f:ident),*) => {
+        const _: () = {
+            assert!(size_of::<$ours>() == size_of::<$c>());
+            $(assert!(offset_of!($ours, $f) == offset_of!($c, $f));)*
+        };
+    };
+}
+same_layout!(Vec2<f64>, sys::cc_vec2, x, y);
+same_layout!(Vec2<f32>, sys::cc_vec2f, x, y);
+same_layout!(Circle<f64>, sys::cc_circle, pos, vel, radius, mass);
+same_layout!(Circle<f32>, sys::cc_circlef, pos, vel, radius, mass);
+same_layout!(Segment<f64>, sys::cc_segment, a, b);
+same_layout!(Segment<f32>, sys::cc_segmentf, a, b);
+same_layout!(RawContact<f64>, sys::cc_contact, t, point, normal, depth);
+same_layout!(RawContact<f32>, sys::cc_contactf, t, point, normal, depth);
+
+// ---- precision ---------------------------------------------------------------------------
+
+mod sealed {
+    pub trait Sealed {}
+    impl Sealed for f64 {}
+    impl Sealed for f32 {}
+}
+
+/// `f64` or `f32`: selects the C function family (`cc_sweep` or `cc_sweepf`, ...).
+pub trait Real:
+    Copy + PartialOrd + fmt::Debug + Default + core::ops::Add<Output = Self> + core::ops::Mul<Output = Self> + sealed::Sealed + 'static
+{
+    const ONE: Self;
+    const INFINITY: Self;
+    #[doc(hidden)]
+    unsafe fn c_detect_static(a: *const Circle<Self>, b: *const Circle<Self>, out: *mut RawContact<Self>) -> c_int;
+    #[doc(hidden)]
+    unsafe fn c_separate(a: *mut Circle<Self>, b: *mut Circle<Self>) -> c_int;
+    #[doc(hidden)]
+    unsafe fn c_sweep(a: *const Circle<Self>, b: *const Circle<Self>, t_max: Self, out: *mut RawContact<Self>) -> c_int;
+    #[doc(hidden)]
+    unsafe fn c_sweep_segment(c: *const Circle<Self>, s: *const Segment<Self>, t_max: Self, out: *mut RawContact<Self>) -> c_int;
+    #[doc(hidden)]
+    unsafe fn c_respond(a: *mut Circle<Self>, b: *mut Circle<Self>, c: *const RawContact<Self>, e: Self) -> c_int;
+    #[doc(hidden)]
+    unsafe fn c_respond_segment(c: *mut Circle<Self>, k: *const RawContact<Self>, e: Self) -> c_int;
+    #[doc(hidden)]
+    unsafe fn c_closest_point(p: Vec2<Self>, s: *const Segment<Self>) -> Vec2<Self>;
+}
+
+macro_rules! impl_real {
+    ($t:ty, $vec:ident, $detect:ident, $separate:ident, $sweep:ident, $sweep_seg:ident, $respond:ident, $respond_seg:ident, $closest:ident) => {
+        impl Real for $t {
+            const ONE: Self = 1.0;
+            const INFINITY: Self = <$t>::INFINITY;
+            unsafe fn c_detect_static(a: *const Circle<Self>, b: *const Circle<Self>, out: *mut RawContact<Self>) -> c_int {
+                sys::$detect(a.cast(), b.cast(), out.cast())
+            }
+            unsafe fn c_separate(a: *mut Circle<Self>, b: *mut Circle<Self>) -> c_int {
+                sys::$separate(a.cast(), b.cast())
+            }
+            unsafe fn c_sweep(a: *const Circle<Self>, b: *const Circle<Self>, t_max: Self, out: *mut RawContact<Self>) -> c_int {
+                sys::$sweep(a.cast(), b.cast(), t_max, out.cast())
+            }
+            unsafe fn c_sweep_segment(c: *const Circle<Self>, s: *const Segment<Self>, t_max: Self, out: *mut RawContact<Self>) -> c_int {
+                sys::$sweep_seg(c.cast(), s.cast(), t_max, out.cast())
+            }
+            unsafe fn c_respond(a: *mut Circle<Self>, b: *mut Circle<Self>, c: *const RawContact<Self>, e: Self) -> c_int {
+                sys::$respond(a.cast(), b.cast(), c.cast(), e)
+            }
+            unsafe fn c_respond_segment(c: *mut Circle<Self>, k: *const RawContact<Self>, e: Self) -> c_int {
+                sys::$respond_seg(c.cast(), k.cast(), e)
+            }
+            unsafe fn c_closest_point(p: Vec2<Self>, s: *const Segment<Self>) -> Vec2<Self> {
+                let r = sys::$closest(sys::$vec { x: p.x, y: p.y }, s.cast());
+                Vec2::new(r.x, r.y)
+            }
+        }
+    };
+}
+impl_real!(f64, cc_vec2, cc_detect_static, cc_separate, cc_sweep, cc_sweep_segment, cc_respond, cc_respond_segment, cc_closest_point_on_segment);
+impl_real!(f32, cc_vec2f, cc_detect_staticf, cc_separatef, cc_sweepf, cc_sweep_segmentf, cc_respondf, cc_respond_segmentf, cc_closest_point_on_segmentf);
+
+// ---- pair functions ----------------------------------------------------------------------
+
+/// First contact of two circles in t in [0, t_max] (`T::INFINITY` for no limit): `Some` hit or
+/// overlap, `None` when they do not touch (moving apart, passing by, or later than t_max).
+pub fn sweep<T: Real>(a: &Circle<T>, b: &Circle<T>, t_max: T) -> Result<Option<Contact<T>>> {
+    let mut out = RawContact::default();
+    // SAFETY: pointers to live values of the C layout (checked above); out is written only on a hit.
+    let code = check(unsafe { T::c_sweep(a, b, t_max, &mut out) })?;
+    Ok(out.into_contact(code))
+}
+
+/// First contact of a moving circle with a static segment.
+pub fn sweep_segment<T: Real>(c: &Circle<T>, s: &Segment<T>, t_max: T) -> Result<Option<Contact<T>>> {
+    let mut out = RawContact::default();
+    let code = check(unsafe { T::c_sweep_segment(c, s, t_max, &mut out) })?;
+    Ok(out.into_contact(code))
+}
+
+/// The overlap of a and b at t = 0 (touching is not overlapping), or `None`.
+pub fn detect_static<T: Real>(a: &Circle<T>, b: &Circle<T>) -> Result<Option<Contact<T>>> {
+    let mut out = RawContact::default();
+    let code = check(unsafe { T::c_detect_static(a, b, &mut out) })?;
+    Ok(out.into_contact(code))
+}
+
+/// Pushes overlapping circles apart until they touch, by shares inversely proportional to their
+/// masses. `Ok(true)` when they overlapped and moved; `Ok(false)` (unchanged) otherwise.
+pub fn separate<T: Real>(a: &mut Circle<T>, b: &mut Circle<T>) -> Result<bool> {
+    Ok(check(unsafe { T::c_separate(a, b) })? == sys::CC_OVERLAP)
+}
+
+/// Applies the collision impulse along `contact.normal` with restitution e in [0, 1] to the
+/// velocities. `Ok(false)` (unchanged) when they are not approaching. Positions are not moved.
+pub fn respond<T: Real>(a: &mut Circle<T>, b: &mut Circle<T>, contact: &Contact<T>, restitution: T) -> Result<bool> {
+    let raw = RawContact::of(contact);
+    Ok(check(unsafe { T::c_respond(a, b, &raw, restitution) })? == sys::CC_HIT)
+}
+
+/// Bounces c off an immovable wall whose normal (circle towards wall) is `contact.normal`.
+pub fn respond_segment<T: Real>(c: &mut Circle<T>, contact: &Contact<T>, restitution: T) -> Result<bool> {
+    let raw = RawContact::of(contact);
+    Ok(check(unsafe { T::c_respond_segment(c, &raw, restitution) })? == sys::CC_HIT)
+}
+
+/// The point of s closest to p.
+pub fn closest_point_on_segment<T: Real>(p: Vec2<T>, s: &Segment<T>) -> Vec2<T> {
+    unsafe { T::c_closest_point(p, s) }
+}
