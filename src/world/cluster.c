@@ -191,12 +191,14 @@ static double cc__speed_scale(const double *v, int nb)
 
 /* ---- the LCP: Lawson-Hanson's active-set method on the Delassus form ---------------------- */
 
-/* Cholesky factor of the passive block W_PP into L (np x np, row-major, stride n). Returns 0
- * when a pivot is not clearly positive: the last column entered depends on the others. */
-static int cc__cholesky(const double *W, int n, const int *passive, int np, double *L)
+/* Rows from..np-1 of the Cholesky factor L of the passive block W_PP (row-major, stride n);
+ * rows before `from` are kept: row i depends only on the rows above it, so appending a contact
+ * costs one row and removing one recomputes only the rows below it. Returns 0 when a pivot is
+ * not clearly positive: the column adds no direction the others do not span. */
+static int cc__cholesky_rows(const double *W, int n, const int *passive, int np, int from, double *L)
 {
     int i, j, k;
-    for (i = 0; i < np; ++i) {
+    for (i = from; i < np; ++i) {
         for (j = 0; j <= i; ++j) {
             double s = W[passive[i] * n + passive[j]];
             for (k = 0; k < j; ++k)
@@ -237,6 +239,27 @@ static void cc__cholesky_solve(const double *L, int n, const int *passive, int n
     }
 }
 
+/* Removes position r from the passive list and refactors the rows below it. Removing columns
+ * from a positive definite block leaves it positive definite, so this cannot fail in exact
+ * arithmetic; should rounding make it fail, the remaining rows are dropped too (returns the new
+ * count, the unknowns dropped set to 0). */
+static int cc__passive_remove(cc__scratch *s, int n, int np, int r)
+{
+    int i;
+    s->in_passive[s->passive[r]] = 0;
+    for (i = r; i + 1 < np; ++i)
+        s->passive[i] = s->passive[i + 1];
+    --np;
+    if (!cc__cholesky_rows(s->W, n, s->passive, np, r, s->L)) {
+        for (i = r; i < np; ++i) {
+            s->in_passive[s->passive[i]] = 0;
+            s->lam[s->passive[i]] = 0.0;
+        }
+        np = r;
+    }
+    return np;
+}
+
 /* Solves the LCP of the m contacts in s->set (W in s->W with stride n = m, b in s->b) into
  * s->lam[0..m). Afterwards every w_k = b_k + (W lam)_k >= -tol unless a blocked contact stays
  * approaching (returns 1: jammed) or the pivot cap is reached (returns 2). */
@@ -272,26 +295,22 @@ static int cc__lcp(cc__scratch *s, int m, double tol)
         }
         s->passive[np++] = j;
         s->in_passive[j] = 1;
+        if (!cc__cholesky_rows(s->W, n, s->passive, np, np - 1, s->L)) {
+            s->in_passive[j] = 0;
+            --np;
+            s->blocked[j] = 1; /* redundant: the others already span its direction */
+            continue;
+        }
         for (;;) {
             double alpha = 1.0;
-            int all_positive = 1;
-            if (!cc__cholesky(s->W, n, s->passive, np, s->L)) {
-                /* only the newest column can make the block singular: removing columns from a
-                 * positive definite block keeps it positive definite */
-                s->in_passive[s->passive[--np]] = 0;
-                s->blocked[j] = 1;
-                break;
-            }
+            int all_positive = 1, first = -1;
             cc__cholesky_solve(s->L, n, s->passive, np, s->b, z, m);
-            if (z[j] <= 0.0 && lam[j] == 0.0 && s->in_passive[j]) {
+            if (s->in_passive[j] && lam[j] == 0.0 && !(z[j] > 0.0)) {
                 /* in exact arithmetic an entering contact always gets a positive impulse;
                  * rounding can deny it that, and then it must not enter again */
-                s->in_passive[j] = 0;
-                for (k = 0; k < np && s->passive[k] != j; ++k) {
+                for (k = 0; s->passive[k] != j; ++k) {
                 }
-                for (; k + 1 < np; ++k)
-                    s->passive[k] = s->passive[k + 1];
-                --np;
+                np = cc__passive_remove(s, n, np, k);
                 s->blocked[j] = 1;
                 break;
             }
@@ -304,33 +323,26 @@ static int cc__lcp(cc__scratch *s, int m, double tol)
                 break;
             }
             /* step from lam towards z until the first passive unknown reaches zero */
-            {
-                int first = -1;
-                for (k = 0; k < np; ++k) {
-                    int p = s->passive[k];
-                    if (!(z[p] > 0.0)) {
-                        double t = lam[p] > 0.0 ? lam[p] / (lam[p] - z[p]) : 0.0;
-                        if (first < 0 || t < alpha) {
-                            alpha = t;
-                            first = p;
-                        }
+            for (k = 0; k < np; ++k) {
+                int p = s->passive[k];
+                if (!(z[p] > 0.0)) {
+                    double t = lam[p] > 0.0 ? lam[p] / (lam[p] - z[p]) : 0.0;
+                    if (first < 0 || t < alpha) {
+                        alpha = t;
+                        first = p;
                     }
                 }
-                for (k = 0; k < np; ++k) {
-                    int p = s->passive[k];
-                    lam[p] += alpha * (z[p] - lam[p]);
-                }
-                lam[first] = 0.0; /* exactly, whatever the rounding of the step */
             }
+            for (k = 0; k < np; ++k) {
+                int p = s->passive[k];
+                lam[p] += alpha * (z[p] - lam[p]);
+            }
+            lam[first] = 0.0; /* exactly, whatever the rounding of the step */
             /* drop the unknowns that reached zero (at least the one that set alpha) */
             for (k = 0; k < np;) {
-                int p = s->passive[k];
-                if (!(lam[p] > 0.0)) {
-                    lam[p] = 0.0;
-                    s->in_passive[p] = 0;
-                    for (i = k; i + 1 < np; ++i)
-                        s->passive[i] = s->passive[i + 1];
-                    --np;
+                if (!(lam[s->passive[k]] > 0.0)) {
+                    lam[s->passive[k]] = 0.0;
+                    np = cc__passive_remove(s, n, np, k);
                 } else {
                     ++k;
                 }

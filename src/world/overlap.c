@@ -32,6 +32,7 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
         for (j = only_higher ? i + 1 : 0; j < w->id_end; j++)
             if (j != i && (B[j].flags & CC__ALIVE)) {
                 cc__advance_body(&B[j], w->now);
+                w->stats.pairs_tested++;
                 (void)cc__world_unoverlap(w, i, j, -1);
             }
     } else {
@@ -42,6 +43,7 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
                 for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = cell[j].next)
                     if (cell[j].cx == x && cell[j].cy == y && j != i && (!only_higher || j > i)) {
                         cc__advance_body(&B[j], w->now);
+                        w->stats.pairs_tested++;
                         (void)cc__world_unoverlap(w, i, j, -1);
                     }
         if (!only_higher)
@@ -49,8 +51,11 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
                 if (j != i)
                     (void)cc__world_unoverlap(w, i, j, -1);
     }
-    for (s = 0; s < w->n_segments; s++)
-        (void)cc__world_unoverlap(w, i, -1, s);
+    if (!isinf(B[i].m))
+        for (s = 0; s < w->n_segments; s++) {
+            w->stats.pairs_tested++;
+            (void)cc__world_unoverlap(w, i, -1, s);
+        }
 }
 
 void cc__rebuild(cc_world *w)

@@ -137,7 +137,6 @@ int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
             return 0;
         if (cc_detect_static(&ca, &cb, &k) != CC_OVERLAP)
             return 0;
-        w->stats.pairs_tested++;
         cc__overlap_seen(w, k.depth);
         if (cc_separate(&ca, &cb) != CC_OVERLAP)
             return 0;
