@@ -103,10 +103,14 @@ def test_memory_is_owned_and_16_byte_aligned():
 
 
 @pytest.mark.parametrize("mode", ["exact", "swept", "discrete"])
-def test_every_mode_runs(mode):
+def test_every_mode_bounces_with_small_steps(mode):
+    # steps of 0.1 move the circle 0.1 < its radius: even the discrete mode cannot tunnel
     w, cid, _ = wall_scene(mode=mode)
-    w.step(10.0)
-    assert w.circle(cid).vel[0] < 0  # it bounced, whatever the mode
+    for _ in range(100):
+        w.step(0.1)
+    c = w.circle(cid)
+    assert c.vel[0] == pytest.approx(-1.0) and c.pos[0] < 4.0
+    assert w.stats.collisions == 1
 
 
 @settings(max_examples=25, deadline=None)
