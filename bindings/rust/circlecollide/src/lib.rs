@@ -360,3 +360,8 @@ pub fn respond_segment<T: Real>(c: &mut Circle<T>, contact: &Contact<T>, restitu
 pub fn closest_point_on_segment<T: Real>(p: Vec2<T>, s: &Segment<T>) -> Vec2<T> {
     unsafe { T::c_closest_point(p, s) }
 }
+
+// The README's Rust example (extracted by build.rs) is compiled and run as a doc test.
+#[cfg(doctest)]
+#[doc = include_str!(concat!(env!("OUT_DIR"), "/readme_rust.md"))]
+pub struct ReadmeDoctests;
