@@ -180,12 +180,83 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
 
 /* ---- The world: many circles and walls in caller-owned memory ------------------------------ */
 
+/* A world simulates up to max_circles circles and max_segments static walls in one block of
+ * memory that the caller provides (cc_world_size / cc_world_init); it never allocates.
+ *
+ * Memory    Everything lives inside [memory, memory + bytes): the world stores no address, not
+ *           even into its own block, so a world may be copied (memcpy) to other 16-byte aligned
+ *           memory of the same size and used from there. It keeps no pointer to the caller's
+ *           defs, circles or segments (it copies them). About 130 bytes per circle plus 32 per
+ *           wall.
+ * Ids       cc_world_add_circle returns the most recently removed id when there is one (removed
+ *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid and names the same
+ *           circle until it is removed; other circles are never renumbered.
+ * Time      Each circle moves along a straight line between impacts. cc_world_get_circle gives
+ *           its state at the world time. Times are absolute (world time), in the scene's units.
+ * Modes     CC_MODE_EXACT (event-driven, see below), CC_MODE_SWEPT and CC_MODE_DISCRETE (see
+ *           cc_mode). All three use the same pair functions (cc_sweep, cc_sweep_segment,
+ *           cc_respond, cc_respond_segment, cc_separate) and the same grid.
+ * EXACT     Every impact is found and processed in time order, at any speed: no tunnelling.
+ *           Each moving circle holds one predicted event (an impact with a circle or a wall, or
+ *           leaving its grid cell) in a priority queue; an impact changes the velocities of the
+ *           two bodies involved, which predict again; events predicted against a body whose
+ *           trajectory has since changed are found stale (per-body counters) and re-predicted.
+ *           Circles are kept in a uniform grid (a cell list hashed into a table sized from
+ *           max_circles, so the plane is unbounded): a circle is tested against the circles of
+ *           the 3x3 cells around its own, and the cost per event is O(log N). Only what a scene
+ *           holds costs anything: a world with max_circles <= 32 tests all pairs and has no
+ *           grid; a world without walls tests no walls; circles at rest predict nothing (what
+ *           moves towards them finds them); immovable circles are obstacles, never queued.
+ * Cells     The cell size is 1.0625 times the largest diameter of a movable circle (or of any
+ *           circle when none is movable), or def.cell_size when that is larger. It is
+ *           recomputed, and the grid rebuilt, at the next step after a larger circle was added
+ *           or set. An immovable circle wider than a cell is kept on a list that every moving
+ *           circle checks. Cells are counted up to 2^40 from the origin in each direction.
+ * Tolerance Impacts are computed from rounded positions, so two bodies touching after an impact
+ *           may overlap by rounding: about 1e-13 of their radius sum for coordinates within a
+ *           few thousand radii of the origin, growing with |coordinates| / radius (the tests
+ *           require less than 1e-10; cc_world_stats.max_overlap reports the deepest seen). Such
+ *           an overlap is harmless: an overlapping pair that approaches is an impact at once,
+ *           one that separates is left to drift apart. An approach slower than 2^-40 times the
+ *           two bodies' summed speeds (rounding), or slower than rest_speed * 2^-20 (a resting
+ *           contact), is not an impact.
+ * Overlaps  Overlaps the caller makes are resolved, never ignored: in EXACT, a circle added or
+ *           set on top of others is pushed apart from each at once with cc_separate (shares
+ *           inverse to the masses), then given the impact if the pair approaches; a circle
+ *           overlapping a wall is pushed out along the wall's normal. Before the first step,
+ *           and after a wall or a circle wider than the cells was added, this happens for all
+ *           circles at the next step instead (which also rebuilds the grid). One
+ *           pass is made; an overlap it leaves (chains of circles) heals as described above.
+ *           SWEPT does this at the start of each step, DISCRETE at the end.
+ * Collapse  With restitution < 1 a group of bodies can collide infinitely often in a finite
+ *           time (inelastic collapse), and bodies pressed together would exchange ever smaller
+ *           impulses. Two remedies: approaches slower than def.rest_speed get restitution 0
+ *           (and those slower than rest_speed * 2^-20 none at all), and no step processes more
+ *           than def.max_events events: it then returns CC_EVENT_LIMIT with the world
+ *           consistent at the time of the last event processed; the next cc_world_step
+ *           continues from there. A body squeezed between an immovable circle moving towards
+ *           a wall (an impossible scene) hits that cap at every call.
+ * Simultaneous  Impacts at the same instant are processed one pair at a time in (time, id)
+ *           order (issue 5 replaces this with a simultaneous-impact model).
+ * Immovable Circles of mass +INFINITY: obstacles that nothing moves. They may have a velocity
+ *           (kinematic bodies): they then move and push others, but pass through other
+ *           immovable circles and through walls.
+ * Threads   One thread at a time per world; distinct worlds are independent.
+ * Determinism  Identical calls give bit-identical results, wherever the world's memory is:
+ *           ties between events are broken by ids, never by addresses. */
+
 typedef struct cc_world cc_world; /* opaque; lives inside the memory given to cc_world_init */
 
 typedef enum cc_mode {
     CC_MODE_EXACT = 0,   /* event-driven: every collision in time order, no tunnelling */
-    CC_MODE_SWEPT = 1,   /* once per step, each pair's first impact in the step; no re-prediction */
-    CC_MODE_DISCRETE = 2 /* move, then find overlaps, push apart and respond; tunnels at speed */
+    CC_MODE_SWEPT = 1,   /* once per step: the grid is rebuilt (overlaps pushed apart), each
+                            circle's first impact in the step is found from the motions at the
+                            start of the step, and the impacts are resolved in time order
+                            without predicting again; a second impact of a circle within one
+                            step is missed (it is left overlapping until the next step) */
+    CC_MODE_DISCRETE = 2 /* move every circle by dt, then push apart every overlapping pair
+                            and wall contact and give approaching pairs their impulse; a circle
+                            moving more than its size per step can pass through others */
 } cc_mode;
 
 /* Passed to the contact callback for every impulse the world applies. */
@@ -199,63 +270,76 @@ typedef struct cc_contact_event {
     double impulse; /* magnitude of the normal impulse applied (mass * velocity) */
 } cc_contact_event;
 
+/* Called during cc_world_step. It may read the world (get_circle, time, stats) but not change
+ * it: add, set, remove and step called from inside return CC_ERR_INVALID and do nothing. Record
+ * what you need and act on it after the step (e.g. remove a pocketed ball). */
 typedef void (*cc_contact_fn)(const cc_contact_event *event, void *user);
 
 /* Fill with cc_world_def_init, then change what you need. struct_size comes first so that a
- * library newer than the caller's header uses defaults for the fields the caller lacks. */
+ * library newer than the caller's header uses defaults for the fields the caller lacks; every
+ * def must reach at least up to and including restitution. Capacities are at most 2^26. */
 typedef struct cc_world_def {
     size_t struct_size;       /* sizeof(cc_world_def) as the caller compiled it */
-    int max_circles;          /* capacity for circles (default 64) */
-    int max_segments;         /* capacity for walls (default 0: a scene without walls pays nothing) */
+    int max_circles;          /* capacity for circles, >= 0 (default 64) */
+    int max_segments;         /* capacity for walls, >= 0 (default 0: a scene without walls pays nothing) */
     int mode;                 /* a cc_mode (default CC_MODE_EXACT) */
     double restitution;       /* coefficient of restitution of every contact, [0, 1] (default 1) */
-    double rest_speed;        /* approach speeds below this collide with restitution 0: the remedy
-                                 for inelastic collapse when restitution < 1 (default 0) */
-    double cell_size;         /* grid cell size; 0 = derived from the radii (default 0) */
-    uint64_t max_events;      /* cap on events per cc_world_step (default 10000000) */
+    double rest_speed;        /* >= 0: approach speeds below this collide with restitution 0: the
+                                 remedy for inelastic collapse when restitution < 1 (default 0) */
+    double cell_size;         /* >= 0: smallest grid cell size; 0 = derived from the radii (default 0) */
+    uint64_t max_events;      /* >= 1: cap on events per cc_world_step (default 10000000) */
     cc_contact_fn on_contact; /* called for every impulse, or NULL (default NULL) */
     void *user;               /* passed to on_contact */
 } cc_world_def;
 
-/* Defaults for every field; sets struct_size = sizeof(cc_world_def). */
+/* Defaults for every field; sets struct_size = sizeof(cc_world_def). Does nothing for NULL. */
 CC_API void cc_world_def_init(cc_world_def *def);
 
-/* Bytes of memory cc_world_init needs for def (its capacities), or 0 when def is invalid. The
- * memory must be aligned to 16 bytes (malloc's alignment). */
+/* Bytes of memory cc_world_init needs for def (its capacities), or 0 when def is invalid or
+ * its struct_size is too small. The memory must be aligned to 16 bytes (malloc's alignment on
+ * 64-bit systems). */
 CC_API size_t cc_world_size(const cc_world_def *def);
 
 /* Builds an empty world at time 0 inside memory[0, bytes). Never writes outside it, never
  * allocates, keeps no pointer into any other caller memory. Returns the world (== memory) and
  * *status = CC_OK, or NULL and *status = CC_ERR_INVALID (bad def), CC_ERR_VERSION (struct_size
- * too small to be a def), CC_ERR_MEMORY (memory NULL, misaligned or bytes too few). status may
- * be NULL. To discard a world, stop using its memory. */
+ * too small to be a def), CC_ERR_MEMORY (memory NULL, misaligned or bytes too few); a failed
+ * call writes nothing into memory. status may be NULL. To discard a world, stop using its
+ * memory. */
 CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *def, int *status);
 
 /* Adds a circle whose state c holds at the current world time. Returns its id (>= 0, stable for
- * its lifetime; removed ids may be reused), CC_ERR_FULL, or CC_ERR_INVALID. */
+ * its lifetime; removed ids may be reused), CC_ERR_FULL, or CC_ERR_INVALID (NULL, invalid
+ * circle, or called from the contact callback). See "Overlaps" above for a circle added on top
+ * of others. */
 CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c);
 
-/* Adds a static wall. Returns its id (>= 0), CC_ERR_FULL or CC_ERR_INVALID. */
+/* Adds a static wall (a == b: a point). Returns its id (0, 1, ... in order of addition),
+ * CC_ERR_FULL or CC_ERR_INVALID. Walls cannot be removed. */
 CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s);
 
-/* Removes a circle (a pocketed ball); other ids are unchanged. CC_OK or CC_ERR_NOT_FOUND. */
+/* Removes a circle (a pocketed ball); other ids are unchanged. CC_OK, CC_ERR_NOT_FOUND or
+ * CC_ERR_INVALID (NULL w, or called from the contact callback). */
 CC_API int cc_world_remove_circle(cc_world *w, int id);
 
 /* Advances world time by dt >= 0 in the world's mode. Returns CC_OK; CC_EVENT_LIMIT when the
  * step processed max_events events and stopped early (the world is consistent, its time is that
  * of the last event processed, and another call continues); CC_ERR_INVALID for dt < 0, NaN or
- * Inf (nothing changes). */
+ * Inf, a world time that would overflow, or a call from the contact callback (nothing
+ * changes). dt = 0 resolves pending overlaps and the impacts due now. */
 CC_API int cc_world_step(cc_world *w, double dt);
 
 /* The circle's state at the current world time (pos is where it is now). CC_OK,
  * CC_ERR_NOT_FOUND or CC_ERR_INVALID (NULL). */
 CC_API int cc_world_get_circle(const cc_world *w, int id, cc_circle *out);
 
-/* Replaces a circle's state at the current world time. CC_OK, CC_ERR_NOT_FOUND, CC_ERR_INVALID. */
+/* Replaces a circle's state at the current world time (position, velocity, radius and mass may
+ * all change; the id stays). CC_OK, CC_ERR_NOT_FOUND, CC_ERR_INVALID (as add). */
 CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c);
 
 /* Copies up to capacity live circles in increasing id order into ids[] and out[] (either may be
- * NULL to skip it). Returns the number of live circles (which may exceed capacity), or an error. */
+ * NULL to skip it). Returns the number of live circles (which may exceed capacity), or
+ * CC_ERR_INVALID (NULL w, capacity < 0). */
 CC_API int cc_world_get_circles(const cc_world *w, int *ids, cc_circle *out, int capacity);
 
 /* The wall with this id. CC_OK, CC_ERR_NOT_FOUND or CC_ERR_INVALID. */
@@ -267,15 +351,17 @@ CC_API double cc_world_time(const cc_world *w);
 typedef struct cc_world_stats {
     size_t struct_size;      /* the caller sets sizeof(cc_world_stats) before the call */
     uint64_t collisions;     /* impulses applied since init: circle-circle and circle-wall */
-    uint64_t events;         /* events processed (collisions, cell crossings, ...) */
+    uint64_t events;         /* events processed: impacts, cell crossings, stale events */
     uint64_t stale_events;   /* predicted events found invalid when their time came */
     uint64_t pairs_tested;   /* pair tests made (sweeps and static tests) */
-    uint64_t cell_crossings; /* grid cell changes processed */
-    double max_overlap;      /* deepest overlap between two bodies seen after a step */
+    uint64_t cell_crossings; /* grid cell changes processed (EXACT) */
+    double max_overlap;      /* deepest overlap seen: at each impact (EXACT, SWEPT), or before
+                                pushing apart (overlaps made by the caller, DISCRETE) */
 } cc_world_stats;
 
-/* Fills the first out->struct_size bytes' worth of fields. CC_OK, CC_ERR_INVALID (NULL) or
- * CC_ERR_VERSION (struct_size smaller than the first two fields). */
+/* Fills the fields that fit in out->struct_size bytes (whole fields only; struct_size itself is
+ * left as the caller set it). CC_OK, CC_ERR_INVALID (NULL) or CC_ERR_VERSION (struct_size
+ * smaller than the first two fields). */
 CC_API int cc_world_get_stats(const cc_world *w, cc_world_stats *out);
 
 /* ---- Single precision: the same contract in float ------------------------------------------ */
