@@ -1,4 +1,4 @@
-/* POSIX (or Windows) calls behind a C99 face: mkdir -p and a monotonic clock. The clock only
+/* POSIX (or Windows) calls behind a C99 face: mkdir -p, a monotonic clock, isatty. The clock only
  * measures how long a run took; nothing drawn depends on it. */
 #if !defined(_WIN32)
 #define _POSIX_C_SOURCE 200809L
@@ -12,6 +12,7 @@
 
 #if defined(_WIN32)
 #include <direct.h>
+#include <io.h>
 #include <sys/stat.h>
 #define DEMO_BACKSLASH_SEPARATES 1
 
@@ -27,9 +28,15 @@ double demo_wall_seconds(void)
 {
     return (double)clock() / CLOCKS_PER_SEC;
 }
+
+int demo_is_terminal_stderr(void)
+{
+    return _isatty(2) != 0;
+}
 #else
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <unistd.h>
 #define DEMO_BACKSLASH_SEPARATES 0
 
 static int make_one(const char *path)
@@ -46,6 +53,11 @@ double demo_wall_seconds(void)
     if (clock_gettime(CLOCK_MONOTONIC, &ts) != 0)
         return (double)clock() / CLOCKS_PER_SEC;
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+int demo_is_terminal_stderr(void)
+{
+    return isatty(2) != 0;
 }
 #endif
 

@@ -1,4 +1,4 @@
-/* The two things cc_demo needs that C99 lacks: making a folder and a wall clock. */
+/* What cc_demo needs that C99 lacks: making folders, a wall clock, knowing a terminal. */
 #ifndef DEMO_PLATFORM_H
 #define DEMO_PLATFORM_H
 
@@ -6,5 +6,8 @@
 int demo_make_dir(const char *path);
 /* Seconds on a monotonic clock, for the wall time of the summary (never for the pictures). */
 double demo_wall_seconds(void);
+
+/* 1 when stderr is a terminal (progress then rewrites one line), else 0. */
+int demo_is_terminal_stderr(void);
 
 #endif

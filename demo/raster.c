@@ -1,8 +1,9 @@
-/* Anti-aliasing by coverage: each shape is a signed distance function; pixels whose centre is
- * further than half a diagonal inside (outside) the edge are fully covered (untouched), and the
- * few pixels the edge crosses are sampled on an 8x8 grid, so that even a circle smaller than a
- * pixel gets its true area. Everything is plain arithmetic: the same input paints the same
- * bytes. */
+/* Anti-aliasing by coverage: each shape is a signed distance function d (negative inside). A
+ * shape at least a pixel thick covers a pixel by the area of a straight edge through it, which
+ * for a pixel-sized box filter is clamp(1/2 - d, 0, 1) at the pixel centre; a thinner shape (a
+ * small circle, a fine rim) is sampled on an 8x8 grid on the pixels its edge crosses, so that even
+ * a circle smaller than a pixel gets its true area. Plain arithmetic only: the same input paints
+ * the same bytes. */
 #include "raster.h"
 
 #include <math.h>
@@ -13,6 +14,7 @@
 
 typedef struct shape {
     int kind; /* 0 disc, 1 capsule, 2 ring */
+    int thin; /* narrower than a pixel somewhere: sample instead of the straight-edge formula */
     double ax, ay, bx, by, r, hw;
     double dx, dy, inv_len2; /* capsule: b - a and 1/|b - a|^2 (0 for a point) */
 } shape;
@@ -44,6 +46,8 @@ static double coverage(const shape *s, double x0, double y0)
         return 1.0;
     if (d >= DEMO_HALF_DIAG)
         return 0.0;
+    if (!s->thin)
+        return d <= -0.5 ? 1.0 : (d >= 0.5 ? 0.0 : 0.5 - d);
     for (j = 0; j < DEMO_SUB; ++j)
         for (i = 0; i < DEMO_SUB; ++i)
             if (shape_distance(s, x0 + (i + 0.5) / DEMO_SUB, y0 + (j + 0.5) / DEMO_SUB) < 0.0)
@@ -78,21 +82,41 @@ static int clampi(double v, int lo, int hi)
     return (int)v;
 }
 
-/* Paints the shape inside the pixel box [x0, x1] x [y0, y1] (its bounds plus a margin). */
-static void paint(demo_canvas *c, const shape *s, double x0, double y0, double x1, double y1,
-                  demo_rgb col, double alpha, demo_blend mode)
+/* Paints the shape inside the pixel box [x0, x1] x [y0, y1] (its bounds plus a margin), or with
+ * to_mask raises the mask to alpha * coverage there. */
+static void paint_or_mask(demo_canvas *c, const shape *s, double x0, double y0, double x1,
+                          double y1, demo_rgb col, double alpha, demo_blend mode, int to_mask)
 {
     int i0 = clampi(floor(x0 - 1.0), 0, c->w), i1 = clampi(ceil(x1 + 1.0), 0, c->w);
     int j0 = clampi(floor(y0 - 1.0), 0, c->h), j1 = clampi(ceil(y1 + 1.0), 0, c->h);
     int i, j;
-    if (!(alpha > 0.0))
+    if (!(alpha > 0.0) || i0 >= i1 || j0 >= j1)
         return;
+    if (to_mask) {
+        c->mx0 = i0 < c->mx0 ? i0 : c->mx0;
+        c->my0 = j0 < c->my0 ? j0 : c->my0;
+        c->mx1 = i1 > c->mx1 ? i1 : c->mx1;
+        c->my1 = j1 > c->my1 ? j1 : c->my1;
+    }
     for (j = j0; j < j1; ++j)
         for (i = i0; i < i1; ++i) {
             double cov = coverage(s, i, j);
-            if (cov > 0.0)
+            if (cov <= 0.0)
+                continue;
+            if (to_mask) {
+                float *m = &c->mask[(size_t)j * (size_t)c->w + (size_t)i];
+                float a = (float)(alpha * cov);
+                *m = a > *m ? a : *m;
+            } else {
                 blend(c, i, j, col, alpha * cov, mode);
+            }
         }
+}
+
+static void paint(demo_canvas *c, const shape *s, double x0, double y0, double x1, double y1,
+                  demo_rgb col, double alpha, demo_blend mode)
+{
+    paint_or_mask(c, s, x0, y0, x1, y1, col, alpha, mode, 0);
 }
 
 demo_rgb demo_rgb_make(float r, float g, float b)
@@ -140,23 +164,25 @@ void demo_canvas_rect(demo_canvas *c, double x0, double y0, double x1, double y1
 void demo_canvas_disc(demo_canvas *c, double cx, double cy, double r, demo_rgb col, double alpha,
                       demo_blend mode)
 {
-    shape s = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    shape s = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     s.ax = cx;
     s.ay = cy;
     s.r = r;
+    s.thin = r < 1.0;
     paint(c, &s, cx - r, cy - r, cx + r, cy + r, col, alpha, mode);
 }
 
 void demo_canvas_capsule(demo_canvas *c, double ax, double ay, double bx, double by, double hw,
                          demo_rgb col, double alpha, demo_blend mode)
 {
-    shape s = {1, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    shape s = {1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     double len2;
     s.ax = ax;
     s.ay = ay;
     s.bx = bx;
     s.by = by;
     s.hw = hw;
+    s.thin = hw < 0.5;
     s.dx = bx - ax;
     s.dy = by - ay;
     len2 = s.dx * s.dx + s.dy * s.dy;
@@ -165,14 +191,59 @@ void demo_canvas_capsule(demo_canvas *c, double ax, double ay, double bx, double
           (ay > by ? ay : by) + hw, col, alpha, mode);
 }
 
+void demo_mask_begin(demo_canvas *c)
+{
+    c->mx0 = c->w;
+    c->my0 = c->h;
+    c->mx1 = 0;
+    c->my1 = 0;
+}
+
+void demo_mask_capsule(demo_canvas *c, double ax, double ay, double bx, double by, double hw,
+                       double alpha, demo_rgb col, demo_blend mode)
+{
+    shape s = {1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    double len2;
+    s.ax = ax;
+    s.ay = ay;
+    s.bx = bx;
+    s.by = by;
+    s.hw = hw;
+    s.thin = hw < 0.5;
+    s.dx = bx - ax;
+    s.dy = by - ay;
+    len2 = s.dx * s.dx + s.dy * s.dy;
+    s.inv_len2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
+    paint_or_mask(c, &s, (ax < bx ? ax : bx) - hw, (ay < by ? ay : by) - hw,
+                  (ax > bx ? ax : bx) + hw, (ay > by ? ay : by) + hw, col, alpha, mode,
+                  c->mask != NULL);
+}
+
+void demo_mask_end(demo_canvas *c, demo_rgb col, demo_blend mode)
+{
+    int i, j;
+    if (c->mask == NULL)
+        return;
+    for (j = c->my0; j < c->my1; ++j)
+        for (i = c->mx0; i < c->mx1; ++i) {
+            float *m = &c->mask[(size_t)j * (size_t)c->w + (size_t)i];
+            if (*m > 0.0f) {
+                blend(c, i, j, col, *m, mode);
+                *m = 0.0f;
+            }
+        }
+    demo_mask_begin(c);
+}
+
 void demo_canvas_ring(demo_canvas *c, double cx, double cy, double r, double hw, demo_rgb col,
                       double alpha, demo_blend mode)
 {
-    shape s = {2, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    shape s = {2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     s.ax = cx;
     s.ay = cy;
     s.r = r;
     s.hw = hw;
+    s.thin = hw < 0.5;
     paint(c, &s, cx - r - hw, cy - r - hw, cx + r + hw, cy + r + hw, col, alpha, mode);
 }
 

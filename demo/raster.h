@@ -10,7 +10,9 @@ typedef struct demo_rgb {
 
 typedef struct demo_canvas {
     int w, h;
-    float *px; /* w*h*3 floats, owned by the caller */
+    float *px;   /* w*h*3 floats, owned by the caller */
+    float *mask; /* w*h zeroed floats for demo_mask_*, or NULL (then they paint directly) */
+    int mx0, my0, mx1, my1; /* the part of the mask in use */
 } demo_canvas;
 
 typedef enum demo_blend {
@@ -36,6 +38,14 @@ void demo_canvas_ring(demo_canvas *c, double cx, double cy, double r, double hw,
 int demo_canvas_text(demo_canvas *c, int x, int y, int scale, const char *s, demo_rgb col);
 /* Width in pixels demo_canvas_text would draw. */
 int demo_text_width(const char *s, int scale);
+
+/* A mask unites several shapes into one before painting, so that where they overlap (the
+ * joints of a trail) the paint is not applied twice: each pixel gets the largest alpha * coverage
+ * of the shapes, then demo_mask_end paints the colour by it and clears the mask. */
+void demo_mask_begin(demo_canvas *c);
+void demo_mask_capsule(demo_canvas *c, double ax, double ay, double bx, double by, double hw,
+                       double alpha, demo_rgb col, demo_blend mode);
+void demo_mask_end(demo_canvas *c, demo_rgb col, demo_blend mode);
 
 /* Rounds to bytes (w*h*3) for output. */
 void demo_canvas_to_bytes(const demo_canvas *c, unsigned char *rgb);

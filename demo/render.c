@@ -47,6 +47,7 @@ static void draw_trail(demo_canvas *c, const demo_stage *s, const demo_view *v, 
     double rpx = body->radius * v->scale;
     demo_rgb col = demo_speed_colour(speed_of(body) / s->def.speed_ref);
     int k;
+    demo_mask_begin(c);
     for (k = 0; k + 1 < tr->count; ++k) {
         /* oldest first: slot head - count is the oldest */
         int i0 = (tr->head - tr->count + k + 2 * DEMO_TRAIL_POINTS) % DEMO_TRAIL_POINTS;
@@ -57,10 +58,11 @@ static void draw_trail(demo_canvas *c, const demo_stage *s, const demo_view *v, 
         if (age >= life || p->t > now || q->t > now || (p->x == q->x && p->y == q->y))
             continue;
         fade = 1.0 - (age < 0.0 ? 0.0 : age) / life;
-        demo_canvas_capsule(c, demo_view_x(v, p->x), demo_view_y(v, p->y), demo_view_x(v, q->x),
-                            demo_view_y(v, q->y), 0.25 + 0.55 * rpx * fade, col, 0.5 * fade,
-                            DEMO_OVER);
+        demo_mask_capsule(c, demo_view_x(v, p->x), demo_view_y(v, p->y), demo_view_x(v, q->x),
+                          demo_view_y(v, q->y), 0.25 + 0.55 * rpx * fade, 0.5 * fade, col,
+                          DEMO_OVER);
     }
+    demo_mask_end(c, col, DEMO_OVER);
 }
 
 static void draw_body(demo_canvas *c, const demo_stage *s, const demo_view *v, int id,
@@ -98,12 +100,14 @@ static void draw_flashes(demo_canvas *c, const demo_stage *s, const demo_view *v
             continue;
         u = age / life;
         a = (0.35 + 0.65 * f->strength) * (1.0 - u) * (1.0 - u);
-        r = s->def.flash_radius * v->scale * (0.35 + 0.65 * u);
-        if (r < 1.0)
-            r = 1.0;
-        demo_canvas_disc(c, demo_view_x(v, f->x), demo_view_y(v, f->y), r, warm, 0.45 * a,
+        r = s->def.flash_radius * v->scale * (0.5 + 0.5 * u);
+        if (r < 1.5)
+            r = 1.5;
+        /* a soft glow: three nested discs of light, brightest at the contact point */
+        demo_canvas_disc(c, demo_view_x(v, f->x), demo_view_y(v, f->y), r, warm, 0.2 * a, DEMO_ADD);
+        demo_canvas_disc(c, demo_view_x(v, f->x), demo_view_y(v, f->y), 0.6 * r, warm, 0.3 * a,
                          DEMO_ADD);
-        demo_canvas_ring(c, demo_view_x(v, f->x), demo_view_y(v, f->y), r, 0.6, warm, 0.8 * a,
+        demo_canvas_disc(c, demo_view_x(v, f->x), demo_view_y(v, f->y), 0.3 * r, warm, 0.5 * a,
                          DEMO_ADD);
     }
 }
@@ -134,6 +138,8 @@ void demo_render_caption(demo_canvas *c, const demo_view *v, const char *text, i
     int w = demo_text_width(text, scale);
     int x = (int)(v->vx + 0.5 * (v->vw - w));
     int y = (int)v->vy + 2 * scale;
+    if (w + 4 * scale > v->vw)
+        return; /* a caption cut off at both ends says nothing: leave it out */
     demo_canvas_rect(c, x - 2 * scale, y - scale, x + w + 2 * scale, y + 8 * scale,
                      demo_rgb_make(0.0f, 0.0f, 0.0f), 0.55, DEMO_OVER);
     demo_canvas_text(c, x, y, scale, text, demo_rgb_make(235.0f, 238.0f, 245.0f));

@@ -21,7 +21,7 @@ double demo_view_y(const demo_view *v, double y);
 /* Walls, trails, circles and flashes of s as of world time now. */
 void demo_render_stage(demo_canvas *c, const demo_stage *s, const demo_view *v, double now);
 
-/* Caption text centred at the top of the view, on a dark band. */
+/* Caption text centred at the top of the view, on a dark band (left out when too wide). */
 void demo_render_caption(demo_canvas *c, const demo_view *v, const char *text, int scale);
 
 #endif

@@ -1,6 +1,6 @@
 /* The frame loop. Frame 0 is the initial state; before frame f the scene's control hook runs
  * and every world is stepped to f / fps (computed from f, not accumulated, so that frame times
- * do not drift). Progress goes to stderr about a hundred times per run, the summary at the end. */
+ * do not drift). Progress goes to stderr, the summary at the end. */
 #include "run.h"
 
 #include "frame.h"
@@ -63,9 +63,12 @@ int demo_run(const demo_options *o)
     size_t npx = (size_t)o->width * (size_t)o->height;
     size_t pathlen = strlen(o->out) + 32;
     char *path;
-    long f, every = o->frames / 100 > 0 ? o->frames / 100 : 1;
+    /* a terminal gets a live counter, a log file ten lines */
+    long f, every = o->frames / (demo_is_terminal_stderr() ? 100 : 10);
     int k, rc = 0;
     double t0 = demo_wall_seconds();
+    if (every < 1)
+        every = 1;
 
     if (scene == NULL) {
         fprintf(stderr, "cc_demo: unknown scene '%s'\n", o->scene);
@@ -81,9 +84,10 @@ int demo_run(const demo_options *o)
     canvas.w = o->width;
     canvas.h = o->height;
     canvas.px = (float *)malloc(npx * 3u * sizeof(float));
+    canvas.mask = (float *)calloc(npx, sizeof(float));
     bytes = (unsigned char *)malloc(npx * 3u);
     path = (char *)malloc(pathlen);
-    if (canvas.px == NULL || bytes == NULL || path == NULL) {
+    if (canvas.px == NULL || canvas.mask == NULL || bytes == NULL || path == NULL) {
         fprintf(stderr, "cc_demo: out of memory for a %dx%d frame\n", o->width, o->height);
         rc = 1;
         goto done;
@@ -119,16 +123,19 @@ int demo_run(const demo_options *o)
             rc = 1;
             goto done;
         }
-        if (f % every == 0 || f + 1 == o->frames)
-            fprintf(stderr, "\rcc_demo: %s frame %ld/%ld (t = %.3f)", o->scene, f + 1, o->frames,
-                    t);
+        if ((f + 1) % every == 0 || f + 1 == o->frames)
+            fprintf(stderr, "%scc_demo: %s frame %ld/%ld (t = %.3f)%s",
+                    demo_is_terminal_stderr() ? "\r" : "", o->scene, f + 1, o->frames, t,
+                    demo_is_terminal_stderr() ? "" : "\n");
     }
-    fprintf(stderr, "\n");
+    if (demo_is_terminal_stderr())
+        fprintf(stderr, "\n");
     summary(&show, o, demo_wall_seconds() - t0);
 
 done:
     demo_show_free(&show);
     free(canvas.px);
+    free(canvas.mask);
     free(bytes);
     free(path);
     return rc;

@@ -55,7 +55,7 @@ static void drive_mallet(demo_show *show, int side, const cc_circle *puck)
 {
     hockey_state *st = (hockey_state *)show->state;
     demo_stage *s = &show->stage[0];
-    double margin = MALLET_R + 0.03;
+    double margin = MALLET_R + 0.04; /* clear of the rails and of the corner chamfers */
     double xlo = side == 0 ? margin : 0.5 * RINK_L + margin;
     double xhi = side == 0 ? 0.5 * RINK_L - margin : RINK_L - margin;
     double home = side == 0 ? 0.2 : RINK_L - 0.2;
@@ -113,13 +113,13 @@ static void hockey_control(demo_show *show, long frame)
 
 static void hockey_backdrop(demo_show *show, int stage, demo_canvas *c, const demo_view *v)
 {
-    demo_rgb line = demo_rgb_make(200.0f, 70.0f, 70.0f);
-    demo_rgb goal = demo_rgb_make(20.0f, 22.0f, 30.0f);
+    demo_rgb line = demo_rgb_make(170.0f, 60.0f, 70.0f);
+    demo_rgb goal = demo_rgb_make(4.0f, 5.0f, 8.0f);
     double hw = 0.004 * v->scale;
     (void)show;
     (void)stage;
     demo_canvas_rect(c, demo_view_x(v, 0.0), demo_view_y(v, RINK_W), demo_view_x(v, RINK_L),
-                     demo_view_y(v, 0.0), demo_rgb_make(222.0f, 230.0f, 236.0f), 1.0, DEMO_OVER);
+                     demo_view_y(v, 0.0), demo_rgb_make(34.0f, 44.0f, 62.0f), 1.0, DEMO_OVER);
     demo_canvas_capsule(c, demo_view_x(v, 0.5 * RINK_L), demo_view_y(v, 0.0),
                         demo_view_x(v, 0.5 * RINK_L), demo_view_y(v, RINK_W), hw, line, 0.8,
                         DEMO_OVER);

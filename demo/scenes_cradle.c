@@ -66,10 +66,10 @@ int demo_scene_cradle(demo_show *show)
         int in = 3 - lane; /* top lane: 1 ball in, then 2, then 3 */
         double y = (lane + 0.5) * CRADLE_LANE;
         for (j = 0; j < 5; ++j) {
-            /* the row at rest is centred; the incoming ones start 8 units to the left, touching
+            /* the row at rest is centred; the incoming ones start 4 units to the left, touching
                each other (2 radii apart), all at the same speed */
             double x = 0.5 * CRADLE_L - 4.0 + 2.0 * j;
-            cc_circle b = j < in ? demo_circle(x - 8.0, y, CRADLE_SPEED, 0.0, 1.0, 1.0)
+            cc_circle b = j < in ? demo_circle(x - 4.0, y, CRADLE_SPEED, 0.0, 1.0, 1.0)
                                  : demo_circle(x, y, 0.0, 0.0, 1.0, 1.0);
             demo_stage_add_circle(s, &b, DEMO_STYLE_SPEED);
         }

@@ -15,11 +15,11 @@
 #define POOL_W 1.27
 #define POOL_R 0.028575    /* ball radius (57.15 mm balls) */
 #define POOL_M 0.17        /* ball mass */
-#define POOL_CUE_SPEED 6.0 /* a firm break */
+#define POOL_CUE_SPEED 8.0 /* a firm break */
 #define POOL_CORNER_GAP 0.075 /* cushion-free length each side of a corner */
 #define POOL_SIDE_GAP 0.065   /* half the mouth of a side pocket */
-#define POOL_ROLL_DECEL 0.25  /* cloth: constant deceleration, m/s^2 ... */
-#define POOL_DRAG 0.3         /* ... plus a proportional drag, 1/s */
+#define POOL_ROLL_DECEL 0.15  /* cloth: constant deceleration, m/s^2 ... */
+#define POOL_DRAG 0.2         /* ... plus a proportional drag, 1/s */
 
 typedef struct pool_state {
     int pocketed;
@@ -107,8 +107,8 @@ int demo_scene_pool(demo_show *show)
     d.y0 = -0.13;
     d.x1 = POOL_L + 0.13;
     d.y1 = POOL_W + 0.13;
-    d.speed_ref = 3.0;
-    d.impulse_ref = POOL_M * 3.0;
+    d.speed_ref = 2.5;
+    d.impulse_ref = POOL_M * 2.5;
     d.trail_time = 0.25;
     d.flash_time = 0.12;
     d.flash_radius = 2.2 * POOL_R;

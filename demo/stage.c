@@ -223,6 +223,8 @@ void demo_stage_snapshot(demo_stage *s)
         s->started = 1;
         s->energy0 = demo_stage_energy(s);
     }
+    if (demo_stage_energy(s) > s->energy_peak)
+        s->energy_peak = demo_stage_energy(s);
 }
 
 double demo_stage_energy(const demo_stage *s)
@@ -236,9 +238,10 @@ double demo_stage_energy(const demo_stage *s)
 
 double demo_stage_drift(const demo_stage *s)
 {
-    if (!(s->energy0 > 0.0))
+    double ref = s->energy0 > s->energy_peak ? s->energy0 : s->energy_peak;
+    if (!(ref > 0.0))
         return 0.0;
-    return (demo_stage_energy(s) - s->energy0 - s->energy_demo) / s->energy0;
+    return (demo_stage_energy(s) - s->energy0 - s->energy_demo) / ref;
 }
 
 int demo_stage_find(const demo_stage *s, int id)

@@ -63,6 +63,7 @@ typedef struct demo_stage {
     /* energy ledger */
     double energy0;       /* kinetic energy when the first frame was taken */
     double energy_demo;   /* kinetic energy the demo added (+) or removed (-) since */
+    double energy_peak;   /* the most kinetic energy seen at a frame */
     int started;
     uint64_t contacts;    /* contact callbacks seen */
     int error;            /* the first library error met, or 0 */
@@ -88,7 +89,8 @@ void demo_stage_snapshot(demo_stage *s);
 
 /* Kinetic energy of the circles of the last snapshot (immovable ones excluded). */
 double demo_stage_energy(const demo_stage *s);
-/* (E_now - E_0 - E_demo) / E_0: the energy the collisions gained or lost, relative. */
+/* (E_now - E_0 - E_demo) / max(E_0, E_peak): the energy the collisions gained or lost,
+ * relative to the most there was (the demo may have added energy, as the mallets do). */
 double demo_stage_drift(const demo_stage *s);
 /* Index into s->circles of a live id, or -1. */
 int demo_stage_find(const demo_stage *s, int id);

@@ -40,8 +40,8 @@ static double area(void)
 
 static void test_disc_covers_its_area(void)
 {
-    /* pi r^2 = pi * 100 = 314.159; an 8x8 sample grid on the ~90 edge pixels errs by well
-       under one pixel in total */
+    /* pi r^2 = pi * 100 = 314.159. The straight-edge coverage ramp (1/2 - d over one pixel)
+       integrates to pi (r - 1/2)^2 + 2 pi (r/2 - 1/12) = pi r^2 + pi/12: 0.26 over */
     demo_canvas_disc(&canvas, 32.3, 31.7, 10.0, white, 1.0, DEMO_OVER);
     TEST_ASSERT_DOUBLE_WITHIN(1.0, 314.159, area());
 }
@@ -58,14 +58,16 @@ static void test_disc_smaller_than_a_pixel_keeps_its_area(void)
 
 static void test_capsule_covers_a_rectangle_and_two_half_discs(void)
 {
-    /* length 20, half-width 2: 20 * 4 + pi * 2^2 = 92.566 */
+    /* length 20, half-width 2: 20 * 4 + pi * 2^2 = 92.566 (+ pi/12 from the ramp at the
+       round ends, as for a disc) */
     demo_canvas_capsule(&canvas, 20.0, 30.0, 40.0, 30.0, 2.0, white, 1.0, DEMO_OVER);
     TEST_ASSERT_DOUBLE_WITHIN(0.5, 92.566, area());
 }
 
 static void test_ring_covers_an_annulus(void)
 {
-    /* radius 10, half-width 1: pi (11^2 - 9^2) = 40 pi = 125.664 */
+    /* radius 10, half-width 1: pi (11^2 - 9^2) = 40 pi = 125.664 (the ramp adds pi/12 on the
+       outer edge and takes it back on the inner one) */
     demo_canvas_ring(&canvas, 32.0, 32.0, 10.0, 1.0, white, 1.0, DEMO_OVER);
     TEST_ASSERT_DOUBLE_WITHIN(1.0, 125.664, area());
     /* the centre stays dark */
@@ -122,6 +124,27 @@ static void test_bytes_round_to_nearest_and_clamp(void)
     TEST_ASSERT_EQUAL_INT(128, out[3]);
 }
 
+static void test_mask_paints_overlapping_shapes_once(void)
+{
+    static float mask[W * H];
+    /* two capsules crossing at (32, 32), each at alpha 0.5: painted directly the crossing gets
+       0.5 + 0.5 * 0.5 = 0.75 of white; through the mask it gets max(0.5, 0.5) = 0.5, like the
+       arms (127.5) */
+    demo_canvas_capsule(&canvas, 22.0, 32.5, 42.0, 32.5, 2.0, white, 0.5, DEMO_OVER);
+    demo_canvas_capsule(&canvas, 32.5, 22.0, 32.5, 42.0, 2.0, white, 0.5, DEMO_OVER);
+    TEST_ASSERT_EQUAL_FLOAT(191.25f, pixels[3 * (32 * W + 32)]);
+    setUp();
+    canvas.mask = mask;
+    demo_mask_begin(&canvas);
+    demo_mask_capsule(&canvas, 22.0, 32.5, 42.0, 32.5, 2.0, 0.5, white, DEMO_OVER);
+    demo_mask_capsule(&canvas, 32.5, 22.0, 32.5, 42.0, 2.0, 0.5, white, DEMO_OVER);
+    demo_mask_end(&canvas, white, DEMO_OVER);
+    canvas.mask = NULL;
+    TEST_ASSERT_EQUAL_FLOAT(127.5f, pixels[3 * (32 * W + 32)]);
+    TEST_ASSERT_EQUAL_FLOAT(127.5f, pixels[3 * (32 * W + 25)]);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, mask[32 * W + 32]); /* cleared for the next use */
+}
+
 static void test_text_draws_known_glyphs_and_skips_unknown_ones(void)
 {
     /* 5 columns per glyph and 1 of spacing: "AB" is 11 wide at scale 1, 22 at scale 2 */
@@ -167,6 +190,7 @@ int main(void)
     RUN_TEST(test_over_mixes_and_add_saturates);
     RUN_TEST(test_shapes_are_clipped_to_the_canvas);
     RUN_TEST(test_bytes_round_to_nearest_and_clamp);
+    RUN_TEST(test_mask_paints_overlapping_shapes_once);
     RUN_TEST(test_text_draws_known_glyphs_and_skips_unknown_ones);
     RUN_TEST(test_speed_colours_follow_the_stops);
     return UNITY_END();
