@@ -100,3 +100,41 @@ def test_respond_conserves_momentum_and_elastic_energy(abc, e):
     n = c.normal
     vn = (b.vel[0] - a.vel[0]) * n[0] + (b.vel[1] - a.vel[1]) * n[1]
     assert vn >= -1e-9
+
+
+anyfloat = st.floats(allow_nan=True, allow_infinity=True)
+
+
+@st.composite
+def wild_circles(draw):
+    return Circle((draw(anyfloat), draw(anyfloat)), (draw(anyfloat), draw(anyfloat)), draw(anyfloat), draw(anyfloat))
+
+
+@settings(max_examples=300, deadline=None)
+@given(wild_circles(), wild_circles(), anyfloat, anyfloat, st.sampled_from(["double", "float"]))
+def test_any_input_returns_or_raises_value_error_never_crashes(a, b, t_max, e, precision):
+    from circlecollide import closest_point_on_segment, detect_static, separate, sweep_segment
+
+    a0, b0 = a.copy(), b.copy()
+    for call in (
+        lambda: sweep(a, b, t_max, precision=precision),
+        lambda: detect_static(a, b, precision=precision),
+        lambda: sweep_segment(a, b.pos, b.vel, t_max, precision=precision),
+        lambda: closest_point_on_segment(a.pos, b.pos, b.vel, precision=precision),
+    ):
+        try:
+            call()
+        except ValueError:
+            pass
+    assert (repr(a), repr(b)) == (repr(a0), repr(b0))  # (repr: NaN fields compare equal)
+    for call in (lambda: separate(a, b, precision=precision), lambda: respond(a, b, sweep_contact(), e, precision=precision)):
+        try:
+            call()
+        except ValueError:
+            pass
+
+
+def sweep_contact():
+    from circlecollide import Contact
+
+    return Contact("hit", 0.0, (0.0, 0.0), (1.0, 0.0), 0.0)

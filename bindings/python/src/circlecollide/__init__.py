@@ -39,7 +39,7 @@ __version__ = "1.0.0"
 
 def library_version() -> str:
     """Version string of the C library loaded ("MAJOR.MINOR.PATCH")."""
-    return _clib.cc_version_string().decode()
+    return str(_clib.cc_version_string().decode())
 
 
 def library_path() -> str:

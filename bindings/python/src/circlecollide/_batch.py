@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import ctypes
 import math
-from typing import Tuple, Union
+from typing import Any, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -26,7 +26,7 @@ def _points(x: ArrayLike, name: str) -> np.ndarray:
     return a
 
 
-def _ptr(a: np.ndarray):
+def _ptr(a: np.ndarray) -> Any:
     return a.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
 
 
@@ -71,7 +71,7 @@ def sweep_many(
     codes_ptr = codes.ctypes.data_as(ctypes.POINTER(ctypes.c_int)) if codes is not None else None
     # also for n == 0, so that t_max is validated the same way
     check(
-        _lib.lib.cc_sweep_many(n, ctypes.byref(soa_a), ctypes.byref(soa_b), t_max, _ptr(t), codes_ptr),
+        _lib.lib.cc_sweep_many(n, ctypes.byref(soa_a), ctypes.byref(soa_b), float(t_max), _ptr(t), codes_ptr),
         "sweep_many",
     )
     return (t, codes) if codes is not None else t

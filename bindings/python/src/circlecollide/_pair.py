@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import ctypes
 import math
-from typing import Iterable, Optional
+from typing import Any, Iterable, Optional
 
 from . import _lib
 from ._errors import check
@@ -29,18 +29,18 @@ L = _lib.lib
 byref = ctypes.byref
 
 
-def _f(precision: Precision, name: str):  # the double function or its float twin
+def _f(precision: Precision, name: str) -> Any:  # the double function or its float twin
     if precision not in ("double", "float"):
         raise ValueError(f"precision must be 'double' or 'float', got {precision!r}")
     return getattr(L, name if precision == "double" else name + "f")
 
 
-def _segment(a: Iterable[float], b: Iterable[float], precision: Precision):
+def _segment(a: Iterable[float], b: Iterable[float], precision: Precision) -> Any:
     v, s = (_lib.cc_vec2, _lib.cc_segment) if precision == "double" else (_lib.cc_vec2f, _lib.cc_segmentf)
     return s(v(*vec2(a, "segment end a")), v(*vec2(b, "segment end b")))
 
 
-def _contact_struct(precision: Precision):
+def _contact_struct(precision: Precision) -> Any:
     return _lib.cc_contact() if precision == "double" else _lib.cc_contactf()
 
 
@@ -51,7 +51,7 @@ def sweep(a: Circle, b: Circle, t_max: float = math.inf, *, precision: Precision
     (already overlapping at t = 0), or ``None`` when they do not touch by t_max.
     """
     ca, cb, out = circle_to_c(a, precision), circle_to_c(b, precision), _contact_struct(precision)
-    code = check(_f(precision, "cc_sweep")(byref(ca), byref(cb), t_max, byref(out)), "sweep")
+    code = check(_f(precision, "cc_sweep")(byref(ca), byref(cb), float(t_max), byref(out)), "sweep")
     return None if code == _lib.MISS else contact_from_c(code, out)
 
 
@@ -60,7 +60,7 @@ def sweep_segment(
 ) -> Optional[Contact]:
     """First contact of a moving circle with the static segment from a to b (a == b: a point)."""
     cc, seg, out = circle_to_c(c, precision), _segment(a, b, precision), _contact_struct(precision)
-    code = check(_f(precision, "cc_sweep_segment")(byref(cc), byref(seg), t_max, byref(out)), "sweep_segment")
+    code = check(_f(precision, "cc_sweep_segment")(byref(cc), byref(seg), float(t_max), byref(out)), "sweep_segment")
     return None if code == _lib.MISS else contact_from_c(code, out)
 
 
@@ -92,7 +92,7 @@ def respond(a: Circle, b: Circle, contact: Contact, restitution: float = 1.0, *,
     Returns True when an impulse was applied, False when they were not approaching.
     """
     ca, cb, cc = circle_to_c(a, precision), circle_to_c(b, precision), contact_to_c(contact, precision)
-    code = check(_f(precision, "cc_respond")(byref(ca), byref(cb), byref(cc), restitution), "respond")
+    code = check(_f(precision, "cc_respond")(byref(ca), byref(cb), byref(cc), float(restitution)), "respond")
     if code == _lib.HIT:
         store_circle(a, ca)
         store_circle(b, cb)
@@ -102,7 +102,7 @@ def respond(a: Circle, b: Circle, contact: Contact, restitution: float = 1.0, *,
 def respond_segment(c: Circle, contact: Contact, restitution: float = 1.0, *, precision: Precision = "double") -> bool:
     """Bounces c off an immovable wall whose normal (circle towards wall) is contact.normal."""
     cc, ct = circle_to_c(c, precision), contact_to_c(contact, precision)
-    code = check(_f(precision, "cc_respond_segment")(byref(cc), byref(ct), restitution), "respond_segment")
+    code = check(_f(precision, "cc_respond_segment")(byref(cc), byref(ct), float(restitution)), "respond_segment")
     if code == _lib.HIT:
         store_circle(c, cc)
     return code == _lib.HIT

@@ -117,12 +117,10 @@ def circle_to_c(c: Circle, precision: Precision = "double") -> AnyCircleStruct:
     if not isinstance(c, Circle):
         raise TypeError(f"expected a Circle, got {type(c).__name__}")
     if precision == "double":
-        v, s = _lib.cc_vec2, _lib.cc_circle
-    elif precision == "float":
-        v, s = _lib.cc_vec2f, _lib.cc_circlef
-    else:
-        raise ValueError(f"precision must be 'double' or 'float', got {precision!r}")
-    return s(v(*c.pos), v(*c.vel), c.radius, c.mass)
+        return _lib.cc_circle(_lib.cc_vec2(*c.pos), _lib.cc_vec2(*c.vel), c.radius, c.mass)
+    if precision == "float":
+        return _lib.cc_circlef(_lib.cc_vec2f(*c.pos), _lib.cc_vec2f(*c.vel), c.radius, c.mass)
+    raise ValueError(f"precision must be 'double' or 'float', got {precision!r}")
 
 
 def circle_from_c(s: AnyCircleStruct) -> Circle:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import ctypes
 from dataclasses import dataclass
-from typing import Callable, Iterable, List, Optional
+from typing import Any, Callable, Iterable, List, Optional
 
 import numpy as np
 
@@ -80,9 +80,9 @@ class World:
         d.max_circles = _c_int(max_circles, "max_circles")
         d.max_segments = _c_int(max_segments, "max_segments")
         d.mode = MODES[mode]
-        d.restitution = restitution
-        d.rest_speed = rest_speed
-        d.cell_size = cell_size
+        d.restitution = float(restitution)
+        d.rest_speed = float(rest_speed)
+        d.cell_size = float(cell_size)
         if max_events is not None:
             if not 0 < int(max_events) < 2**64:
                 raise ValueError("max_events must be a positive integer")
@@ -113,7 +113,7 @@ class World:
 
     # ---- contact callback ---------------------------------------------------------------
 
-    def _dispatch(self, event, user) -> None:  # called from C: must never raise
+    def _dispatch(self, event: Any, user: Any) -> None:  # called from C: must never raise
         if self._error is not None or self._on_contact is None:
             return
         try:
@@ -165,7 +165,7 @@ class World:
         """Advances world time by dt. Returns False when the step stopped at max_events (the
         world is consistent at the last event; call again to continue), True otherwise."""
         self._error = None
-        code = check(L.cc_world_step(self._w, dt), "step")
+        code = check(L.cc_world_step(self._w, float(dt)), "step")
         if self._error is not None:
             err, self._error = self._error, None
             raise err
@@ -174,7 +174,7 @@ class World:
     @property
     def time(self) -> float:
         """Current world time."""
-        return L.cc_world_time(self._w)
+        return float(L.cc_world_time(self._w))
 
     @property
     def on_contact(self) -> Optional[ContactCallback]:
