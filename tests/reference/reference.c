@@ -580,27 +580,76 @@ static int margins(const ref_problem *p, const double *x, mpfr_t *m, mpfr_t *v, 
     return k;
 }
 
-/* x moved by s ulps of its precision (towards +inf for s > 0); radii stay > 0, infinities stay */
-static double step_ulps(double x, int s, int is_float)
+/* one ulp of x in the inputs' precision (the gap above |x|; the smallest subnormal at 0) */
+static double ulp_of(double x, int is_float)
 {
-    int i;
+    x = fabs(x);
+    return is_float ? (double)nextafterf((float)x, HUGE_VALF) - x : nextafter(x, HUGE_VAL) - x;
+}
+
+/* x moved by s ulps of its precision. For float inputs s may be fractional: the moved value is
+ * a double between floats, which the exact solver takes as it is, so that a decision window
+ * narrower than one float ulp can still be reached. For double inputs s is rounded to whole
+ * ulps. Infinities stay. */
+static double step_ulps(double x, double s, int is_float)
+{
     double y = x;
-    if (isinf(x))
+    long i, n;
+    if (isinf(x) || s == 0.0)
         return x;
-    for (i = 0; i < (s < 0 ? -s : s); i++)
-        y = is_float ? (double)nextafterf((float)y, s > 0 ? HUGE_VALF : -HUGE_VALF) : nextafter(y, s > 0 ? HUGE_VAL : -HUGE_VAL);
+    if (is_float) {
+        y = x + s * ulp_of(x, 1);
+        return isfinite(y) ? y : x;
+    }
+    n = lround(fabs(s));
+    for (i = 0; i < n; i++)
+        y = nextafter(y, s > 0 ? HUGE_VAL : -HUGE_VAL);
     return isfinite(y) ? y : x;
 }
 
 static int is_radius(const ref_problem *p, int i) { return i == 4 || (p->kind == REF_CIRCLES && i == 9); }
 
-int ref_in_band(const ref_problem *p, int answer, int k)
+/* the problem with every input i moved by s * g[i] ulps; 0 if that makes a radius <= 0 */
+static int moved(const ref_problem *p, const double *g, double s, ref_problem *q)
 {
+    int i;
+    *q = *p;
+    for (i = 0; i < p->n; i++) {
+        q->x[i] = step_ulps(p->x[i], s * g[i], p->is_float);
+        if (is_radius(p, i) && !(q->x[i] > 0.0))
+            return 0;
+    }
+    return 1;
+}
+
+/* what a witness must satisfy: the exact answer `code`, and when check_t, a contact time within
+ * tol condition-scaled ulps of t */
+typedef struct want {
+    int code, check_t, not_feature; /* not_feature: the witness must touch another feature */
+    double t, tol;
+} want;
+
+static int satisfies(const ref_problem *q, const want *w)
+{
+    ref_result r;
+    if (!w->check_t)
+        return ref_solve(q, NULL) == w->code;
+    if (ref_solve(q, &r) != CC_HIT || r.feature == w->not_feature)
+        return 0;
+    return ref_t_error(&r, w->t) <= w->tol * (q->is_float ? FLT_EPSILON : DBL_EPSILON) * r.cond;
+}
+
+static int band_search(const ref_problem *p, const want *w, int k)
+{
+    /* Perturbation directions aimed at each margin m_j: every input moved the way that changes
+     * m_j (g = sign of its change over k ulps), all at once or one at a time, by whole ulps
+     * 1..k and by the first-order amount that just takes m_j through zero. */
+    static const double whole[] = {1, 2, 3, 4, 6, 8};
     mpfr_t m0[MAX_MARGINS], m1[MAX_MARGINS], v[10], tmp[8];
-    signed char grad[MAX_MARGINS][11];
-    int nm, i, j, mag, dir, found = 0;
-    ref_problem q = *p;
-    if (ref_solve(p, NULL) == answer)
+    double delta[MAX_MARGINS][11], g[11], e[11];
+    int nm, i, j, l, dir, found = 0;
+    ref_problem q;
+    if (satisfies(p, w))
         return 1;
     for (i = 0; i < MAX_MARGINS; i++)
         mpfr_inits2(MARGIN_PREC, m0[i], m1[i], (mpfr_ptr)0);
@@ -609,36 +658,48 @@ int ref_in_band(const ref_problem *p, int answer, int k)
     for (i = 0; i < 8; i++)
         mpfr_init2(tmp[i], MARGIN_PREC);
     nm = margins(p, p->x, m0, v, tmp);
-    /* which way each input pushes each margin */
     for (i = 0; i < p->n; i++) {
         q = *p;
         q.x[i] = step_ulps(p->x[i], k, p->is_float);
         (void)margins(p, q.x, m1, v, tmp);
         for (j = 0; j < nm; j++) {
-            int c = mpfr_cmp(m1[j], m0[j]);
-            grad[j][i] = (signed char)(c > 0 ? 1 : c < 0 ? -1 : 0);
+            mpfr_sub(m1[j], m1[j], m0[j], MPFR_RNDN);
+            delta[j][i] = mpfr_get_d(m1[j], MPFR_RNDN); /* change of m_j over k ulps of input i */
         }
     }
-    /* push every margin both ways, by 1..k ulps of every input at once, and one input at a time */
-    for (j = 0; j < nm && !found; j++)
-        for (dir = -1; dir <= 1 && !found; dir += 2)
-            for (mag = 1; mag <= k && !found; mag++) {
-                q = *p;
-                for (i = 0; i < p->n; i++) {
-                    q.x[i] = step_ulps(p->x[i], dir * mag * grad[j][i], p->is_float);
-                    if (is_radius(p, i) && !(q.x[i] > 0))
-                        q.x[i] = p->x[i];
-                }
-                found = ref_solve(&q, NULL) == answer;
-            }
-    for (i = 0; i < p->n && !found; i++)
-        for (dir = -1; dir <= 1 && !found; dir += 2) {
-            q = *p;
-            q.x[i] = step_ulps(p->x[i], dir * k, p->is_float);
-            if (is_radius(p, i) && !(q.x[i] > 0))
-                continue;
-            found = ref_solve(&q, NULL) == answer;
+    for (j = 0; j < nm && !found; j++) {
+        double sum = 0.0, mj = mpfr_get_d(m0[j], MPFR_RNDN), s;
+        for (i = 0; i < p->n; i++) {
+            g[i] = delta[j][i] > 0 ? 1.0 : delta[j][i] < 0 ? -1.0 : 0.0;
+            sum += fabs(delta[j][i]);
         }
+        if (sum == 0.0)
+            continue;
+        /* all inputs at once: whole ulps both ways, then just through zero (towards -sign m_j) */
+        for (dir = -1; dir <= 1 && !found; dir += 2)
+            for (l = 0; l < (int)(sizeof whole / sizeof whole[0]) && whole[l] <= k && !found; l++)
+                found = moved(p, g, dir * whole[l], &q) && satisfies(&q, w);
+        for (l = 1; l <= 4 && !found; l++) {
+            s = fabs(mj) / sum * k * (1.0 + 0.25 * (l - 1)) * 1.000001;
+            if (s <= k)
+                found = moved(p, g, mj > 0 ? -s : s, &q) && satisfies(&q, w);
+        }
+        /* one input at a time */
+        for (i = 0; i < p->n && !found; i++) {
+            if (g[i] == 0.0)
+                continue;
+            memset(e, 0, sizeof e);
+            e[i] = g[i];
+            for (dir = -1; dir <= 1 && !found; dir += 2)
+                for (l = 0; l < (int)(sizeof whole / sizeof whole[0]) && whole[l] <= k && !found; l++)
+                    found = moved(p, e, dir * whole[l], &q) && satisfies(&q, w);
+            for (l = 1; l <= 4 && !found; l++) {
+                s = fabs(mj) / fabs(delta[j][i]) * k * (1.0 + 0.25 * (l - 1)) * 1.000001;
+                if (s <= k)
+                    found = moved(p, e, mj > 0 ? -s : s, &q) && satisfies(&q, w);
+            }
+        }
+    }
     for (i = 0; i < MAX_MARGINS; i++)
         mpfr_clears(m0[i], m1[i], (mpfr_ptr)0);
     for (i = 0; i < 10; i++)
@@ -646,4 +707,21 @@ int ref_in_band(const ref_problem *p, int answer, int k)
     for (i = 0; i < 8; i++)
         mpfr_clear(tmp[i]);
     return found;
+}
+
+int ref_in_band(const ref_problem *p, int answer, int k)
+{
+    want w;
+    w.code = answer, w.check_t = 0, w.not_feature = -2, w.t = 0.0, w.tol = 0.0;
+    return band_search(p, &w, k);
+}
+
+int ref_t_in_band(const ref_problem *p, double t, double tol, int k)
+{
+    want w;
+    ref_result r;
+    if (p->kind != REF_SEGMENT || ref_solve(p, &r) != CC_HIT)
+        return 0;
+    w.code = CC_HIT, w.check_t = 1, w.not_feature = r.feature, w.t = t, w.tol = tol;
+    return band_search(p, &w, k);
 }

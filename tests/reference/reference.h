@@ -57,4 +57,11 @@ double ref_residual(const ref_problem *p, double t);
  * one means the answer is wrong. */
 int ref_in_band(const ref_problem *p, int answer, int k);
 
+/* For a segment problem whose exact answer is a hit: 1 when t is within tol condition-scaled
+ * ulps (eps * cond of that problem) of the exact contact time of some problem whose every input
+ * lies within k ulps of p's and whose first contact is with another feature (the interior or
+ * an end point). Where the first contact jumps between features under input rounding, no bound
+ * on |t - t*| can hold; this is the test that still does. Searched as ref_in_band. */
+int ref_t_in_band(const ref_problem *p, double t, double tol, int k);
+
 #endif
