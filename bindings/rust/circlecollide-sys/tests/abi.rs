@@ -82,7 +82,7 @@ fn header_structs(h: &str) -> BTreeMap<String, Vec<String>> {
         for decl in body.split(';').map(words).filter(|d| !d.is_empty()) {
             // "const double *px, *py" -> px, py ; "cc_vec2 a, b" -> a, b
             let first = decl.split(',').next().unwrap();
-            let mut names = vec![first.rsplit(|c: char| c == ' ' || c == '*').next().unwrap().to_string()];
+            let mut names = vec![first.rsplit([' ', '*']).next().unwrap().to_string()];
             names.extend(decl.split(',').skip(1).map(|n| n.trim().trim_start_matches('*').trim().to_string()));
             fields.extend(names);
         }
