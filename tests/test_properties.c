@@ -24,6 +24,7 @@ typedef double Wide; /* the reference precision: double for the float API */
 #define FAR_OFFSET 65536.0  /* 2^16: grid points + offset stay exact in 24 bits */
 #define FAR_SPEED 16384.0   /* 2^14 */
 #define WIDE_EPS DBL_EPSILON
+#define SCALE_WIDE 60
 #else
 typedef long double Wide; /* 64-bit significand on x86; == double elsewhere (then skipped) */
 #define GRID 0x1p-10
@@ -31,6 +32,7 @@ typedef long double Wide; /* 64-bit significand on x86; == double elsewhere (the
 #define FAR_OFFSET 1e12 /* ulp at 1e12 is 2^-13: grid points + 1e12 are exact */
 #define FAR_SPEED 1e6
 #define WIDE_EPS LDBL_EPSILON
+#define SCALE_WIDE 400
 #endif
 /* the reference is useful when it carries at least 8 more bits than the precision tested */
 #define HAVE_WIDE_REFERENCE (WIDE_EPS * 256 <= EPS)
@@ -219,7 +221,8 @@ static void test_translation_invariance(void)
 }
 
 /* Scaling lengths by 2^kl and speeds by 2^kv (exact) scales t by 2^(kl - kv) exactly and the
- * point by 2^kl, with the normal unchanged: scenes from 2^-30 (1e-9) to 2^30 (1e9). */
+ * point by 2^kl, with the normal unchanged: rounding commutes with power-of-two scaling, and
+ * the solver's own rescaling is by powers of two, so any difference is a bug. */
 static void test_scale_invariance(void)
 {
     uint64_t seed = 4;
@@ -227,7 +230,10 @@ static void test_scale_invariance(void)
     for (i = 0; i < N_CASES; i++) {
         Circle a, b, sa, sb;
         Contact k = sentinel_contact(), ks = sentinel_contact();
-        int kl = rng_int(&seed, 61) - 30, kv = rng_int(&seed, 61) - 30, r;
+        /* 3 in 4 within 2^-30..2^30 (the contract's 1e-9..1e9); the rest out to the extremes
+         * that keep every input and t normal: 2^-400..2^400 (float 2^-60..2^60) */
+        int wide = rng_int(&seed, 4) == 0, span = wide ? SCALE_WIDE : 30;
+        int kl = rng_int(&seed, 2 * span + 1) - span, kv = rng_int(&seed, 2 * span + 1) - span, r;
         double L = ldexp(1.0, kl), V = ldexp(1.0, kv);
         random_pair(&seed, &a, &b);
         sa = circle(a.pos.x * L, a.pos.y * L, a.vel.x * V, a.vel.y * V, a.radius * L, a.mass);
@@ -243,7 +249,8 @@ static void test_scale_invariance(void)
         EXPECT_EXACT(k.point.y * L, ks.point.y);
         hits += r == CC_HIT;
     }
-    printf("scale (%s): %d cases, %d hits, scales 2^-30..2^30: t, normal, point exact\n", PREC_NAME, N_CASES, hits);
+    printf("scale (%s): %d cases, %d hits, scales 2^-30..2^30 and 2^-%d..2^%d: t, normal, point exact\n", PREC_NAME,
+           N_CASES, hits, SCALE_WIDE, SCALE_WIDE);
 }
 
 /* cc_respond on random bodies and unit normals: momentum conserved (finite masses), kinetic
@@ -351,15 +358,41 @@ static Wide wide_seg_dist(Wide px, Wide py, const Segment *w)
     return sqrtl(wx * wx + wy * wy);
 }
 
+/* Closest approach of the centre's path c + v t, t >= 0, to the wall, in the wider precision:
+ * 0 when the path crosses the wall, else the least of the start's distance to the wall and
+ * each end point's distance to the path (the minimum of two disjoint convex sets' distance
+ * along a ray and a segment is attained at an end of one of them). */
+static Wide wide_path_wall_dist(const Circle *c, const Segment *w)
+{
+    Wide cx = c->pos.x, cy = c->pos.y, vx = c->vel.x, vy = c->vel.y, ux = (Wide)w->b.x - w->a.x,
+         uy = (Wide)w->b.y - w->a.y;
+    Wide ax = (Wide)w->a.x - cx, ay = (Wide)w->a.y - cy, den = vx * uy - vy * ux, best = wide_seg_dist(cx, cy, w);
+    Wide v2 = vx * vx + vy * vy;
+    int i;
+    if (den != 0) {
+        Wide t = (ax * uy - ay * ux) / den, lam = (ax * vy - ay * vx) / den;
+        if (t >= 0 && lam >= 0 && lam <= 1)
+            return 0;
+    }
+    for (i = 0; i < 2 && v2 > 0; i++) {
+        Wide px = (i ? (Wide)w->b.x : (Wide)w->a.x) - cx, py = (i ? (Wide)w->b.y : (Wide)w->a.y) - cy;
+        Wide t = (px * vx + py * vy) / v2, d;
+        t = t < 0 ? 0 : t;
+        d = sqrtl((px - vx * t) * (px - vx * t) + (py - vy * t) * (py - vy * t));
+        best = d < best ? d : best;
+    }
+    return best;
+}
+
 /* Circle against wall: the contact touches (the centre at t is r from the wall) and is
  * approached; the circle is not within the wall's reach before t (checked at 64 earlier
- * times); reversing the wall's end points gives the same answer; translating everything by
+ * times); a miss never comes within r of the wall (exact closest approach of the path); reversing the wall's end points gives the same answer; translating everything by
  * a far grid offset changes neither the code nor t. */
 static void test_sweep_segment_properties(void)
 {
     uint64_t seed = 6;
-    int i, j, hits = 0;
-    double worst = 0;
+    int i, j, hits = 0, misses = 0;
+    double worst = 0, worst_miss = -1e300;
     const double K = 8;
     for (i = 0; i < N_CASES; i++) {
         Circle c, fc;
@@ -376,6 +409,15 @@ static void test_sweep_segment_properties(void)
         TEST_ASSERT_EQUAL_INT(r, F(cc_sweep_segment)(&fc, &fw, (Real)INFINITY, &kf));
         if (r != CC_MISS)
             EXPECT_EXACT(k.t, kf.t);
+        if (r == CC_MISS) {
+            /* a miss: the path never comes within r of the wall (beyond rounding) */
+            double s = hypot((double)c.pos.x - w.a.x, (double)c.pos.y - w.a.y) +
+                       hypot((double)w.b.x - w.a.x, (double)w.b.y - w.a.y) + c.radius;
+            double e = (double)((Wide)c.radius - wide_path_wall_dist(&c, &w)) / (EPS * s);
+            worst_miss = e > worst_miss ? e : worst_miss;
+            TEST_ASSERT_TRUE_MESSAGE(e <= K, "a miss whose path comes within r of the wall");
+            misses++;
+        }
         if (r != CC_HIT)
             continue;
         hits++;
@@ -399,8 +441,9 @@ static void test_sweep_segment_properties(void)
             TEST_ASSERT_DOUBLE_WITHIN(K * EPS * s, k.point.y, kr.point.y);
         }
     }
-    printf("sweep_segment (%s): %d cases, %d hits, max | dist(centre(t), wall) - r | = %.2f eps * scale (bound %.0f)\n",
-           PREC_NAME, N_CASES, hits, worst, K);
+    printf("sweep_segment (%s): %d cases, %d hits, max | dist(centre(t), wall) - r | = %.2f eps * scale (bound %.0f); "
+           "%d misses, deepest reach of a missing path %.2f eps * scale (bound %.0f)\n",
+           PREC_NAME, N_CASES, hits, worst, K, misses, worst_miss, K);
     TEST_ASSERT_TRUE(hits > N_CASES / 5);
 }
 

@@ -212,6 +212,32 @@ static void test_different_radii(void)
     expect_hit(&a, &b, 10, 3, 0.6, 0.8, 1.6, 1.8, 4);
 }
 
+#ifdef TEST_FLOAT
+#define GRAZE_DELTA 0x1p-21 /* 2 - delta is representable: ulp(2) = 2^-22 */
+#else
+#define GRAZE_DELTA 0x1p-50 /* ulp(2) = 2^-51 */
+#endif
+
+/* Grazing: b at (-10, 2 - delta) r 1 moving (1,0) past a at (0,0) r 1, closest approach
+ * 2 - delta < R = 2 by a few ulps of 2. A hit: |(t - 10, 2 - delta)| = 2 gives
+ * t = 10 - sqrt(delta (4 - delta)) (about 10 - 2^-24 in double, 10 - 2^-9.5 in float). The
+ * factored discriminant sees it: |dv| R - |dp x dv| = 2 - (2 - delta) = delta exactly, while
+ * b^2 - a c = 100 - (100 - 4 delta) loses 4 delta entirely (100's ulp is 2^-46 > 4 delta), and a
+ * textbook solver calls this a miss. The closing speed at contact is sqrt(delta (4 - delta)) / 2,
+ * so the contract's tolerance is 8 eps (|dp| + |dv| t + R) / closing. */
+static void test_grazing_few_ulps_inside(void)
+{
+    double delta = GRAZE_DELTA, root = sqrt(delta * (4 - delta)), t = 10 - root;
+    Circle a = circle(0, 0, 0, 0, 1, 1), b = circle(-10, 2 - delta, 1, 0, 1, 1);
+    Contact k = sentinel_contact();
+    TEST_ASSERT_EQUAL_INT(CC_HIT, F(cc_sweep)(&a, &b, 100, &k));
+    TEST_ASSERT_DOUBLE_WITHIN(8 * EPS * (sqrt(100 + 4.0) + t + 2) / (root / 2), t, k.t);
+    /* exactly tangent (delta = 0) is the contract's miss */
+    b.pos.y = 2;
+    k = sentinel_contact();
+    TEST_ASSERT_EQUAL_INT(CC_MISS, F(cc_sweep)(&a, &b, 100, &k));
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -232,5 +258,6 @@ int main(void)
     RUN_TEST(test_tiny_and_huge_scenes);
     RUN_TEST(test_differences_overflow);
     RUN_TEST(test_different_radii);
+    RUN_TEST(test_grazing_few_ulps_inside);
     return UNITY_END();
 }

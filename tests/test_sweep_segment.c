@@ -208,6 +208,30 @@ static void test_overlap_decided_in_relative_frame(void)
     }
 }
 
+/* Touching a slanted wall and approaching it: a hit at t = 0, also when rounding puts the
+ * centre a hair inside the line's reach (a bug found by the property test: that was a miss,
+ * and the circle then passed through the wall). Wall a = (-1.5625, 6.375), b = (2.375, 1.125),
+ * u = b - a = (3.9375, -5.25) = 0.65625 (6, -8), |u| = 6.5625. Circle (0.625, 2.3125) r 0.6875:
+ * w0 = c - a = (2.1875, -4.0625), |u x w0| / |u| = 4.51171875 / 6.5625 = 0.6875 = r, foot
+ * parameter 29.94140625 / 43.06640625 = 0.695 (inside): touching. The normal towards the wall
+ * is (0.8, 0.6); the velocity (0.0625, 0.25) closes at 0.05 + 0.15 = 0.2. Point c + r n =
+ * (1.175, 2.725). (Or an overlap of an ulp: touching exactly is where rounding may decide.) */
+static void test_touching_slanted_wall(void)
+{
+    Segment w = segment(-1.5625, 6.375, 2.375, 1.125);
+    Circle c = circle(0.625, 2.3125, 0.0625, 0.25, 0.6875, 1);
+    Contact k = sentinel_contact();
+    int r = F(cc_sweep_segment)(&c, &w, 10, &k);
+    /* exact touching is a boundary: rounding may also call it an overlap by an ulp, never a miss */
+    TEST_ASSERT_TRUE_MESSAGE(r == CC_HIT || r == CC_OVERLAP, "touching and approaching is not a miss");
+    if (r == CC_HIT)
+        expect_hit(&c, &w, 10, 0, 0.8, 0.6, 1.175, 2.725, 8);
+    else
+        TEST_ASSERT_DOUBLE_WITHIN(8 * EPS, 0, k.depth);
+    EXPECT_EXACT(0, k.t);
+    EXPECT_VEC_NEAR(8, 0.8, 0.6, k.normal);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -224,5 +248,6 @@ int main(void)
     RUN_TEST(test_far_from_origin);
     RUN_TEST(test_long_wall_near_end);
     RUN_TEST(test_overlap_decided_in_relative_frame);
+    RUN_TEST(test_touching_slanted_wall);
     return UNITY_END();
 }
