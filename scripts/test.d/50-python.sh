@@ -7,7 +7,12 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 out=${CC_PYTHON_OUT:-$root/build/python}  # CI: inside the clone; developers may point it elsewhere
 rm -rf "$out/venv" "$out/wheels" "$out/run"
 mkdir -p "$out/run"
-python3 -m venv "$out/venv"
+# Debian's own python3 needs python3-venv for this; a python3 from elsewhere brings it along
+if ! python3 -m venv "$out/venv" 2>/dev/null; then
+  rm -rf "$out/venv"
+  apt-get install -y -q python3-venv >/dev/null
+  python3 -m venv "$out/venv"
+fi
 py=$out/venv/bin/python
 "$py" -m pip install -q --disable-pip-version-check scikit-build-core numpy pytest hypothesis
 # no build isolation: the venv already has the build backend; the system's cmake is used
