@@ -69,19 +69,15 @@ static pair random_pair(int kind)
     dbx = rng_range(-10, 10);
     dby = rng_range(-10, 10);
     if (kind > 0) {
-        /* relative displacement that brings b to a point at distance `miss` from a at time f */
-        double f = rng_range(0.1, 1.2), ang = rng_range(0, 6.283185307179586);
+        /* b passes the point e, at distance `miss` from a's centre at time f, moving relative
+         * to a perpendicular to the offset e - a(f): its closest approach to a is `miss`, at f */
+        double f = rng_range(0.1, 1.2), ang = rng_range(0, 6.283185307179586), speed = rng_range(1, 12);
         double miss = kind == 1 ? rng_range(0, 1.2) * R : R + rng_range(-2, 2) * TOL;
         double ex = p.pa[0] + dax * f + miss * cos(ang), ey = p.pa[1] + day * f + miss * sin(ang);
-        /* the closest approach is the aim point only when the path is perpendicular to the
-         * offset: aim along the perpendicular direction through the target point */
-        double speed = rng_range(1, 12), tx = -sin(ang), ty = cos(ang);
-        double rvx = tx * speed, rvy = ty * speed;
-        /* b's start such that b(f) = e with b's displacement da + rv */
-        p.pb[0] = (float)(ex - (dax + rvx) * f);
-        p.pb[1] = (float)(ey - (day + rvy) * f);
-        dbx = dax + rvx;
-        dby = day + rvy;
+        dbx = dax - sin(ang) * speed;
+        dby = day + cos(ang) * speed;
+        p.pb[0] = (float)(ex - dbx * f);
+        p.pb[1] = (float)(ey - dby * f);
     }
     p.ca2[0] = (float)(p.pa[0] + dax);
     p.ca2[1] = (float)(p.pa[1] + day);
