@@ -66,10 +66,46 @@ def test_every_struct_matches_field_for_field():
             ), f"{name}.{fname}: {ctype}"
 
 
-def test_every_function_is_declared_with_its_argument_count():
-    decls = re.findall(r"CC_API\s+[\w\s\*]+?\**\s*(cc_\w+)\s*\(([^)]*)\)\s*;", header_text())
-    names = {n for n, _ in decls}
+SCALARS = {
+    "double": ctypes.c_double,
+    "float": ctypes.c_float,
+    "int": ctypes.c_int,
+    "unsigned": ctypes.c_uint,
+    "long": ctypes.c_long,
+    "size_t": ctypes.c_size_t,
+    "void": None,
+}
+
+
+def expected_ctype(c: str):
+    """The ctypes type that stands for the C type c ("const cc_circle*", "double", ...)."""
+    c = c.replace("const ", "").replace(" ", "")
+    if c in ("char*",):
+        return ctypes.c_char_p
+    if c in ("void*", "cc_world*"):  # the world is opaque: a void pointer
+        return ctypes.c_void_p
+    if c.endswith("*"):
+        base = c[:-1]
+        return ctypes.POINTER(SCALARS.get(base) or getattr(_lib, base))
+    return SCALARS[c] if c in SCALARS else getattr(_lib, c)
+
+
+def test_every_function_is_declared_with_the_header_types():
+    decls = re.findall(r"CC_API\s+([\w\s\*]+?)\s*(cc_\w+)\s*\(([^)]*)\)\s*;", header_text())
+    names = {n for _, n, _ in decls}
+    assert len(names) >= 30
     assert names == set(_lib.PROTOTYPES), names ^ set(_lib.PROTOTYPES)
-    for name, args in decls:
-        count = 0 if args.strip() in ("", "void") else args.count(",") + 1
-        assert len(_lib.PROTOTYPES[name][1]) == count, name
+    for ret, name, args in decls:
+        restype, argtypes = _lib.PROTOTYPES[name]
+        ret = ret.strip()
+        stars = ""
+        while ret.endswith("*"):
+            ret, stars = ret[:-1].strip(), stars + "*"
+        assert restype is expected_ctype(ret + stars), f"return type of {name}"
+        params = [] if args.strip() in ("", "void") else [" ".join(a.split()) for a in args.split(",")]
+        want = []
+        for p in params:
+            p = p.replace("*", " * ")
+            words = p.split()[:-1]  # drop the parameter's name
+            want.append(expected_ctype(" ".join(words).replace(" *", "*")))
+        assert argtypes == want, f"argument types of {name}"

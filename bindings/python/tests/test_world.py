@@ -125,3 +125,15 @@ def test_exact_mode_conserves_momentum_and_energy(vels, seed):
     p1, k1 = w.momentum(), w.kinetic_energy()
     assert p1 == pytest.approx(p0, abs=1e-9 * (1 + k0))
     assert k1 == pytest.approx(k0, rel=1e-9, abs=1e-12)
+
+
+def test_callback_survives_garbage_collection():
+    # the ctypes trampoline is owned by the World: a collection between init and step is harmless
+    import gc
+
+    seen = []
+    w, _, _ = wall_scene(on_contact=lambda e: seen.append(e.t))
+    gc.collect()
+    w.step(10.0)
+    assert seen == [pytest.approx(4.0)]
+    assert "World(" in repr(w)

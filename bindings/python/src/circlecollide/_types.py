@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import ctypes
 import math
+import struct
 from dataclasses import dataclass
 from typing import Iterable, Literal, Tuple, Union
 
@@ -110,6 +112,8 @@ class Contact:
     depth: float
 
 
+_pack6d = struct.Struct("=6d").pack  # cc_circle: pos.x, pos.y, vel.x, vel.y, radius, mass
+assert struct.calcsize("=6d") == ctypes.sizeof(_lib.cc_circle)
 AnyCircleStruct = Union[_lib.cc_circle, _lib.cc_circlef]
 
 
@@ -117,7 +121,8 @@ def circle_to_c(c: Circle, precision: Precision = "double") -> AnyCircleStruct:
     if not isinstance(c, Circle):
         raise TypeError(f"expected a Circle, got {type(c).__name__}")
     if precision == "double":
-        return _lib.cc_circle(_lib.cc_vec2(*c.pos), _lib.cc_vec2(*c.vel), c.radius, c.mass)
+        # packing the six doubles is several times faster than building the nested structs
+        return _lib.cc_circle.from_buffer_copy(_pack6d(*c._pos, *c._vel, c.radius, c.mass))
     if precision == "float":
         return _lib.cc_circlef(_lib.cc_vec2f(*c.pos), _lib.cc_vec2f(*c.vel), c.radius, c.mass)
     raise ValueError(f"precision must be 'double' or 'float', got {precision!r}")

@@ -111,6 +111,9 @@ class World:
         self._scratch = (_lib.cc_circle * max(1, self.max_circles))()
         self._ids = (ctypes.c_int * max(1, self.max_circles))()
 
+    def __repr__(self) -> str:
+        return f"World(max_circles={self.max_circles}, mode={self.mode!r}, circles={len(self)}, time={self.time!r})"
+
     # ---- contact callback ---------------------------------------------------------------
 
     def _dispatch(self, event: Any, user: Any) -> None:  # called from C: must never raise
