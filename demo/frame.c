@@ -25,6 +25,8 @@ void demo_frame_render(demo_canvas *c, demo_show *show)
         demo_stage *s = &show->stage[k];
         demo_view v = demo_view_fit(&s->def, k * col_w, 0.0, col_w, c->h);
         cc_world_stats st;
+        /* each stage stays in its column: a bullet's trail may leave its box, not its panel */
+        demo_canvas_clip(c, (int)(k * col_w + 0.5), 0, (int)((k + 1) * col_w + 0.5), c->h);
         if (show->backdrop != NULL)
             show->backdrop(show, k, c, &v);
         demo_render_stage(c, s, &v, cc_world_time(s->world));
@@ -33,6 +35,7 @@ void demo_frame_render(demo_canvas *c, demo_show *show)
             show->caption(show, k, text, sizeof text);
         if (text[0] != '\0')
             demo_render_caption(c, &v, text, scale);
+        demo_canvas_unclip(c);
         if (k > 0) /* a thin rule between columns */
             demo_canvas_rect(c, k * col_w - 0.5, 0.0, k * col_w + 0.5, c->h,
                              demo_rgb_make(90.0f, 96.0f, 110.0f), 1.0, DEMO_OVER);

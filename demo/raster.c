@@ -82,14 +82,46 @@ static int clampi(double v, int lo, int hi)
     return (int)v;
 }
 
+/* The pixel rectangle painting may touch: the canvas, or its clip rectangle. */
+static void limits(const demo_canvas *c, int *x0, int *y0, int *x1, int *y1)
+{
+    *x0 = 0;
+    *y0 = 0;
+    *x1 = c->w;
+    *y1 = c->h;
+    if (c->clipped) {
+        *x0 = c->cx0 > 0 ? c->cx0 : 0;
+        *y0 = c->cy0 > 0 ? c->cy0 : 0;
+        *x1 = c->cx1 < c->w ? c->cx1 : c->w;
+        *y1 = c->cy1 < c->h ? c->cy1 : c->h;
+    }
+}
+
+void demo_canvas_clip(demo_canvas *c, int x0, int y0, int x1, int y1)
+{
+    c->clipped = 1;
+    c->cx0 = x0;
+    c->cy0 = y0;
+    c->cx1 = x1;
+    c->cy1 = y1;
+}
+
+void demo_canvas_unclip(demo_canvas *c)
+{
+    c->clipped = 0;
+}
+
 /* Paints the shape inside the pixel box [x0, x1] x [y0, y1] (its bounds plus a margin), or with
  * to_mask raises the mask to alpha * coverage there. */
 static void paint_or_mask(demo_canvas *c, const shape *s, double x0, double y0, double x1,
                           double y1, demo_rgb col, double alpha, demo_blend mode, int to_mask)
 {
-    int i0 = clampi(floor(x0 - 1.0), 0, c->w), i1 = clampi(ceil(x1 + 1.0), 0, c->w);
-    int j0 = clampi(floor(y0 - 1.0), 0, c->h), j1 = clampi(ceil(y1 + 1.0), 0, c->h);
-    int i, j;
+    int lx0, ly0, lx1, ly1, i0, i1, j0, j1, i, j;
+    limits(c, &lx0, &ly0, &lx1, &ly1);
+    i0 = clampi(floor(x0 - 1.0), lx0, lx1);
+    i1 = clampi(ceil(x1 + 1.0), lx0, lx1);
+    j0 = clampi(floor(y0 - 1.0), ly0, ly1);
+    j1 = clampi(ceil(y1 + 1.0), ly0, ly1);
     if (!(alpha > 0.0) || i0 >= i1 || j0 >= j1)
         return;
     if (to_mask) {
@@ -148,9 +180,12 @@ static double overlap1(double a0, double a1, double p)
 void demo_canvas_rect(demo_canvas *c, double x0, double y0, double x1, double y1, demo_rgb col,
                       double alpha, demo_blend mode)
 {
-    int i0 = clampi(floor(x0), 0, c->w), i1 = clampi(ceil(x1), 0, c->w);
-    int j0 = clampi(floor(y0), 0, c->h), j1 = clampi(ceil(y1), 0, c->h);
-    int i, j;
+    int lx0, ly0, lx1, ly1, i0, i1, j0, j1, i, j;
+    limits(c, &lx0, &ly0, &lx1, &ly1);
+    i0 = clampi(floor(x0), lx0, lx1);
+    i1 = clampi(ceil(x1), lx0, lx1);
+    j0 = clampi(floor(y0), ly0, ly1);
+    j1 = clampi(ceil(y1), ly0, ly1);
     for (j = j0; j < j1; ++j) {
         double cy = overlap1(y0, y1, j);
         for (i = i0; i < i1; ++i) {

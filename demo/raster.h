@@ -13,6 +13,8 @@ typedef struct demo_canvas {
     float *px;   /* w*h*3 floats, owned by the caller */
     float *mask; /* w*h zeroed floats for demo_mask_*, or NULL (then they paint directly) */
     int mx0, my0, mx1, my1; /* the part of the mask in use */
+    int clipped;            /* 1: paint only inside [cx0, cx1) x [cy0, cy1) */
+    int cx0, cy0, cx1, cy1;
 } demo_canvas;
 
 typedef enum demo_blend {
@@ -21,6 +23,9 @@ typedef enum demo_blend {
 } demo_blend;
 
 demo_rgb demo_rgb_make(float r, float g, float b);
+/* Restricts painting to the pixels [x0, x1) x [y0, y1) (a stage's column), or lifts that. */
+void demo_canvas_clip(demo_canvas *c, int x0, int y0, int x1, int y1);
+void demo_canvas_unclip(demo_canvas *c);
 void demo_canvas_fill(demo_canvas *c, demo_rgb col);
 /* Axis-aligned rectangle [x0, x1) x [y0, y1) with fractional edges covered in proportion. */
 void demo_canvas_rect(demo_canvas *c, double x0, double y0, double x1, double y1, demo_rgb col,

@@ -44,9 +44,10 @@ static void summary(demo_show *show, const demo_options *o, double seconds)
         cc_world_get_stats(s->world, &st);
         fprintf(stderr,
                 "  %-8s: world time %.3f, %" PRIu64 " collisions, %" PRIu64
-                " events, energy drift %+.3e (relative, collisions only; restitution %g)\n",
+                " events, deepest overlap %.3g\n"
+                "            energy drift %+.3e (relative, collisions only; restitution %g)\n",
                 mode_name(s->def.mode), cc_world_time(s->world), st.collisions, st.events,
-                demo_stage_drift(s), s->def.restitution);
+                st.max_overlap, demo_stage_drift(s), s->def.restitution);
     }
     if (show->report != NULL)
         show->report(show, stderr);

@@ -110,6 +110,24 @@ static void test_shapes_are_clipped_to_the_canvas(void)
     TEST_ASSERT_EQUAL_FLOAT(0.0f, pixels[3 * (W * H - 1)]);
 }
 
+static void test_clip_keeps_paint_inside_a_column(void)
+{
+    /* a disc of radius 25 at the centre (columns 7..56), clipped to columns 10..19: 9 and 20
+       stay dark, column 10 is painted on the centre row */
+    demo_canvas_clip(&canvas, 10, 0, 20, H);
+    demo_canvas_disc(&canvas, 32.0, 32.0, 25.0, white, 1.0, DEMO_OVER);
+    demo_canvas_rect(&canvas, 0.0, 0.0, W, 1.0, white, 1.0, DEMO_OVER);
+    demo_canvas_unclip(&canvas);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, pixels[3 * (32 * W + 9)]);
+    TEST_ASSERT_EQUAL_FLOAT(255.0f, pixels[3 * (32 * W + 10)]);
+    TEST_ASSERT_EQUAL_FLOAT(255.0f, pixels[3 * (32 * W + 19)]);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, pixels[3 * (32 * W + 20)]);
+    /* the rectangle's row: only its pixels 10..19 */
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, pixels[3 * 9]);
+    TEST_ASSERT_EQUAL_FLOAT(255.0f, pixels[3 * 10]);
+    TEST_ASSERT_EQUAL_FLOAT(0.0f, pixels[3 * 20]);
+}
+
 static void test_bytes_round_to_nearest_and_clamp(void)
 {
     unsigned char out[W * H * 3];
@@ -189,6 +207,7 @@ int main(void)
     RUN_TEST(test_rect_covers_fractional_pixels_in_proportion);
     RUN_TEST(test_over_mixes_and_add_saturates);
     RUN_TEST(test_shapes_are_clipped_to_the_canvas);
+    RUN_TEST(test_clip_keeps_paint_inside_a_column);
     RUN_TEST(test_bytes_round_to_nearest_and_clamp);
     RUN_TEST(test_mask_paints_overlapping_shapes_once);
     RUN_TEST(test_text_draws_known_glyphs_and_skips_unknown_ones);
