@@ -38,8 +38,8 @@ void bench_pair_data_init(bench_pair_data *d, size_t n);
 void bench_pair_data_derive(const bench_pair_data *d);
 /* the methods available in this build, with output arrays for pairs pairs; returns how many */
 int bench_methods(bench_method *out, size_t pairs);
-/* high-precision reference of every pair (of the float inputs when single); 0 when this build
- * has none */
-int bench_reference(const bench_pair_data *d, int single, double *t, int *code);
+/* exact reference of every pair (of the float inputs when single): code, and for hits the time
+ * t + t_lo to ~106 bits; returns 0 when this build has no reference */
+int bench_reference(const bench_pair_data *d, int single, double *t, double *t_lo, int *code);
 
 #endif

@@ -1,0 +1,35 @@
+/* The world benchmark's scenes (gas, pool break, air hockey), built reproducibly from a seed so
+ * that every mode, step size and peer engine starts from the very same state. */
+#ifndef CC_BENCH_SCENES_H
+#define CC_BENCH_SCENES_H
+
+#include "circlecollide.h"
+
+#define BENCH_MAX_WALLS 8
+
+typedef struct bench_scene {
+    char name[48];
+    int n;                 /* circles */
+    cc_circle *c;          /* their initial state (malloc'ed) */
+    int n_walls;
+    cc_segment walls[BENCH_MAX_WALLS];
+    double x0, y0, x1, y1; /* the box the walls enclose: a centre outside it has tunnelled */
+    double r_typ;          /* the radius that errors and overlaps are measured in */
+    double t_end;          /* simulated time of one run */
+} bench_scene;
+
+/* n equal discs of radius 0.5 at area fraction phi in a square box with four walls: jittered
+ * triangular-lattice sites (so that even phi = 0.6, beyond random packing, starts without
+ * overlap), Gaussian velocities of unit spread per component, zero total momentum. */
+void bench_scene_gas(bench_scene *s, int n, double phi, unsigned long long seed);
+/* A pool break: 15 balls racked 1e-6 m apart, the cue ball at 10 m/s, four cushions. */
+void bench_scene_pool(bench_scene *s);
+/* Air hockey: a puck at 30 m/s (half a metre per 1/60 s step, 8 puck radii) and two immovable
+ * mallets on a 2 m x 1 m table. */
+void bench_scene_hockey(bench_scene *s);
+void bench_scene_free(bench_scene *s);
+
+/* Kinetic energy of the movable circles. */
+double bench_energy(const cc_circle *c, int n);
+
+#endif

@@ -1,0 +1,509 @@
+/* World-level benchmark: scenes x modes x step sizes (cost, collisions per second, tunnelling,
+ * worst overlap, energy drift, trajectory error against EXACT at a tiny step), the EXACT
+ * headline at N = 1e4, the scaling of EXACT's cost per collision with N, and the cost of
+ * features a scene does not use. Results as CSV rows and `figure NAME VALUE` lines.
+ *
+ * Usage: bench_world matrix   [--quick] [--csv FILE]
+ *        bench_world headline [--quick]
+ *        bench_world scaling  [--quick] [--max-n N] [--csv FILE]
+ *        bench_world features [--quick] [--csv FILE]
+ *        bench_world dump-gas N PHI    (the gas's initial state, one circle a line, for peers)
+ *        bench_world check-trace N PHI FILE (judges a peer's recorded steps, see peers.py)
+ *        bench_world peer N PHI T_END DT  (our EXACT world on the peers' terms)
+ *
+ * Timed runs call nothing but cc_world_step; the checks (bench_check.h) run in a separate,
+ * untimed run of the same steps. */
+#include "bench_check.h"
+#include "bench_util.h"
+
+static const char *mode_name[] = {"EXACT", "SWEPT", "DISCRETE"};
+static int g_verbose = 1; /* the world's own counters next to the timings */
+
+typedef struct world_box {
+    cc_world *w;
+    void *mem;
+    size_t bytes;
+} world_box;
+
+/* A world holding the scene, with room for extra circles and walls as asked. */
+static void world_make(world_box *b, const bench_scene *s, int mode, int extra_circles, int max_segments)
+{
+    cc_world_def def;
+    int i, st;
+    cc_world_def_init(&def);
+    def.max_circles = s->n + extra_circles;
+    def.max_segments = max_segments;
+    def.mode = mode;
+    def.restitution = 1.0;
+    b->bytes = cc_world_size(&def);
+    b->mem = bench_alloc(b->bytes);
+    b->w = cc_world_init(b->mem, b->bytes, &def, &st);
+    if (b->w == NULL) {
+        fprintf(stderr, "bench_world: cc_world_init: %s\n", cc_result_string(st));
+        exit(1);
+    }
+    for (i = 0; i < s->n; i++)
+        if (cc_world_add_circle(b->w, &s->c[i]) != i) {
+            fprintf(stderr, "bench_world: cc_world_add_circle failed for circle %d\n", i);
+            exit(1);
+        }
+    for (i = 0; i < s->n_walls && i < max_segments; i++)
+        if (cc_world_add_segment(b->w, &s->walls[i]) < 0) {
+            fprintf(stderr, "bench_world: cc_world_add_segment failed\n");
+            exit(1);
+        }
+}
+
+static void world_free(world_box *b) { free(b->mem); }
+
+static void step(cc_world *w, double dt)
+{
+    int r = cc_world_step(w, dt);
+    while (r == CC_EVENT_LIMIT)
+        r = cc_world_step(w, 0.0);
+    if (r != CC_OK) {
+        fprintf(stderr, "bench_world: cc_world_step: %s\n", cc_result_string(r));
+        exit(1);
+    }
+}
+
+static uint64_t collisions(const cc_world *w)
+{
+    cc_world_stats st;
+    memset(&st, 0, sizeof st);
+    st.struct_size = sizeof st;
+    cc_world_get_stats(w, &st);
+    return st.collisions;
+}
+
+/* ---- one configuration of the matrix ------------------------------------------------------ */
+
+typedef struct run_result {
+    double sec_per_sim_s, sec_lo, sec_hi; /* wall time per simulated second: median, min, max */
+    double coll_per_s;                    /* collisions per wall second */
+    uint64_t coll;                        /* collisions in one run */
+    long tunnel, escaped;
+    double max_overlap, energy_drift, traj_err;
+} run_result;
+
+/* Wall time of one run of the scene, repeated until min_time has passed; per-run median of
+ * `reps` such measurements. */
+static void time_runs(const bench_scene *s, int mode, double dt, int reps, double min_time, run_result *out)
+{
+    double *per = bench_alloc((size_t)reps * sizeof *per);
+    int k, steps = (int)ceil(s->t_end / dt - 1e-9);
+    for (k = 0; k < reps; k++) {
+        double spent = 0.0;
+        int runs = 0;
+        do {
+            world_box b;
+            double t0;
+            int i;
+            world_make(&b, s, mode, 0, s->n_walls);
+            t0 = bench_now();
+            for (i = 0; i < steps; i++)
+                step(b.w, dt);
+            spent += bench_now() - t0;
+            out->coll = collisions(b.w);
+            world_free(&b);
+            runs++;
+        } while (spent < min_time);
+        per[k] = spent / runs;
+    }
+    bench_range(per, (size_t)reps, &out->sec_lo, &out->sec_hi);
+    out->sec_per_sim_s = bench_median(per, (size_t)reps) / (steps * dt);
+    out->sec_lo /= steps * dt;
+    out->sec_hi /= steps * dt;
+    out->coll_per_s = (double)out->coll / (out->sec_per_sim_s * steps * dt);
+    free(per);
+}
+
+/* The checked run: tunnelling, escapes, overlap, energy, and the final state. */
+static void checked_run(const bench_scene *s, int mode, double dt, cc_circle *final, run_result *out)
+{
+    world_box b;
+    bench_check k;
+    cc_circle *pre = bench_alloc((size_t)s->n * sizeof *pre), *post = bench_alloc((size_t)s->n * sizeof *post);
+    int i, steps = (int)ceil(s->t_end / dt - 1e-9);
+    double e0 = bench_energy(s->c, s->n);
+    world_make(&b, s, mode, 0, s->n_walls);
+    bench_check_init(&k, s->n);
+    cc_world_get_circles(b.w, NULL, pre, s->n);
+    for (i = 0; i < steps; i++) {
+        step(b.w, dt);
+        cc_world_get_circles(b.w, NULL, post, s->n);
+        bench_check_step(&k, s, pre, post, dt);
+        memcpy(pre, post, (size_t)s->n * sizeof *pre);
+    }
+    out->tunnel = k.tunnel_circle + k.tunnel_wall;
+    out->escaped = k.escaped;
+    out->max_overlap = k.max_overlap;
+    out->energy_drift = e0 > 0.0 ? fabs(bench_energy(post, s->n) - e0) / e0 : 0.0;
+    if (final != NULL)
+        memcpy(final, post, (size_t)s->n * sizeof *post);
+    bench_check_free(&k);
+    world_free(&b);
+    free(pre);
+    free(post);
+}
+
+static double traj_error(const bench_scene *s, const cc_circle *a, const cc_circle *ref)
+{
+    double sum = 0.0;
+    int i;
+    for (i = 0; i < s->n; i++) {
+        double dx = a[i].pos.x - ref[i].pos.x, dy = a[i].pos.y - ref[i].pos.y;
+        sum += dx * dx + dy * dy;
+    }
+    return sqrt(sum / s->n) / s->r_typ;
+}
+
+typedef struct opts {
+    int quick;
+    const char *csv;
+    long max_n;
+} opts;
+
+static FILE *open_csv(const char *path, const char *header)
+{
+    FILE *f;
+    if (path == NULL)
+        return NULL;
+    f = fopen(path, "w");
+    if (f == NULL) {
+        fprintf(stderr, "bench_world: cannot write %s\n", path);
+        exit(2);
+    }
+    fprintf(f, "%s\n", header);
+    return f;
+}
+
+static int cmd_matrix(const opts *o)
+{
+    static const double steps_full[] = {1.0 / 30, 1.0 / 60, 1.0 / 120, 1.0 / 240, 1.0 / 480};
+    const double dt_ref = 1.0 / 7680; /* "a tiny step" for the EXACT reference */
+    bench_scene scenes[5];
+    int n_scenes = 0, si, gas_n = o->quick ? 300 : 1000, reps = o->quick ? 3 : 5;
+    double min_time = o->quick ? 0.01 : 0.1;
+    FILE *csv = open_csv(o->csv, "scene,mode,dt,sec_per_sim_s,sec_min,sec_max,collisions,collisions_per_s,"
+                                 "tunnelling,escaped,max_overlap_r,energy_drift,traj_err_r");
+    bench_scene_gas(&scenes[n_scenes++], gas_n, 0.05, 1);
+    bench_scene_gas(&scenes[n_scenes++], gas_n, 0.3, 2);
+    bench_scene_gas(&scenes[n_scenes++], gas_n, 0.6, 3);
+    bench_scene_pool(&scenes[n_scenes++]);
+    bench_scene_hockey(&scenes[n_scenes++]);
+    for (si = 0; si < n_scenes; si++) {
+        bench_scene *s = &scenes[si];
+        cc_circle *ref = bench_alloc((size_t)s->n * sizeof *ref), *fin = bench_alloc((size_t)s->n * sizeof *fin);
+        run_result rr;
+        int mode, d;
+        if (s->n > 100)
+            s->t_end = 1.0; /* a few collisions per molecule: before chaos erases any comparison */
+        memset(&rr, 0, sizeof rr);
+        checked_run(s, CC_MODE_EXACT, dt_ref, ref, &rr);
+        printf("%-22s %-8s %-9s %12s %10s %12s %6s %6s %10s %10s %10s\n", s->name, "mode", "dt", "s/sim s",
+               "spread", "coll/s", "tunnel", "escape", "overlap/r", "dE/E", "err/r");
+        for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++) {
+            int n_dt = mode == CC_MODE_EXACT ? 2 : (int)(sizeof steps_full / sizeof steps_full[0]);
+            for (d = 0; d < n_dt; d++) {
+                double dt = mode == CC_MODE_EXACT ? (d == 0 ? 1.0 / 60 : dt_ref) : steps_full[d];
+                memset(&rr, 0, sizeof rr);
+                time_runs(s, mode, dt, reps, min_time, &rr);
+                checked_run(s, mode, dt, fin, &rr);
+                rr.traj_err = traj_error(s, fin, ref);
+                printf("%-22s %-8s 1/%-7.0f %12.4g %4.0f%%-%3.0f%% %12.4g %6ld %6ld %10.3g %10.3g %10.3g\n", s->name,
+                       mode_name[mode], 1.0 / dt, rr.sec_per_sim_s, 100.0 * (rr.sec_lo / rr.sec_per_sim_s - 1.0),
+                       100.0 * (rr.sec_hi / rr.sec_per_sim_s - 1.0), rr.coll_per_s, rr.tunnel, rr.escaped,
+                       rr.max_overlap, rr.energy_drift, rr.traj_err);
+                if (csv != NULL)
+                    fprintf(csv, "%s,%s,%.9g,%.6g,%.6g,%.6g,%llu,%.6g,%ld,%ld,%.6g,%.6g,%.6g\n", s->name,
+                            mode_name[mode], dt, rr.sec_per_sim_s, rr.sec_lo, rr.sec_hi, (unsigned long long)rr.coll,
+                            rr.coll_per_s, rr.tunnel, rr.escaped, rr.max_overlap, rr.energy_drift, rr.traj_err);
+                if (mode == CC_MODE_EXACT && rr.tunnel + rr.escaped > 0)
+                    printf("EXACT tunnelled in %s at dt 1/%.0f\n", s->name, 1.0 / dt);
+            }
+        }
+        free(ref);
+        free(fin);
+        bench_scene_free(s);
+    }
+    if (csv != NULL)
+        fclose(csv);
+    return 0;
+}
+
+/* EXACT on the gas: collisions per wall second over steps of 1/60 after a warm-up, median of
+ * reps runs. Returns the median; *cost_ns = ns per collision. */
+static double exact_rate(int n, double phi, int reps, uint64_t min_coll, double *cost_ns, double *lo, double *hi,
+                         size_t *bytes)
+{
+    bench_scene s;
+    double *rate = bench_alloc((size_t)reps * sizeof *rate), med;
+    int k;
+    bench_scene_gas(&s, n, phi, 7);
+    for (k = 0; k < reps; k++) {
+        world_box b;
+        uint64_t c0;
+        double t0, spent;
+        world_make(&b, &s, CC_MODE_EXACT, 0, 4);
+        step(b.w, 1.0 / 60); /* first step: initial predictions, not steady state */
+        c0 = collisions(b.w);
+        t0 = bench_now();
+        do
+            step(b.w, 1.0 / 60);
+        while (collisions(b.w) - c0 < min_coll);
+        spent = bench_now() - t0;
+        rate[k] = (double)(collisions(b.w) - c0) / spent;
+        *bytes = b.bytes;
+        if (k == 0 && g_verbose) {
+            cc_world_stats st;
+            memset(&st, 0, sizeof st);
+            st.struct_size = sizeof st;
+            cc_world_get_stats(b.w, &st);
+            printf("  n=%d: per collision %.2f events, %.2f stale, %.2f pair tests, %.2f cell crossings\n", n,
+                   (double)st.events / st.collisions, (double)st.stale_events / st.collisions,
+                   (double)st.pairs_tested / st.collisions, (double)st.cell_crossings / st.collisions);
+        }
+        world_free(&b);
+    }
+    bench_range(rate, (size_t)reps, lo, hi);
+    med = bench_median(rate, (size_t)reps);
+    *cost_ns = 1e9 / med;
+    free(rate);
+    bench_scene_free(&s);
+    return med;
+}
+
+static int cmd_headline(const opts *o)
+{
+    double cost, lo, hi;
+    size_t bytes;
+    double rate = exact_rate(10000, 0.3, o->quick ? 3 : 7, o->quick ? 300000 : 2000000, &cost, &lo, &hi, &bytes);
+    printf("EXACT gas n=10000 phi=0.3: %.4g collisions/s [%.4g, %.4g], %.1f ns per collision\n", rate, lo, hi, cost);
+    bench_figure("world_collisions_per_s_n10000", rate);
+    return 0;
+}
+
+static int cmd_scaling(const opts *o)
+{
+    long n;
+    FILE *csv = open_csv(o->csv, "n,collisions_per_s,cost_ns,rate_min,rate_max,bytes_per_circle");
+    printf("%10s %14s %12s %24s %14s\n", "N", "collisions/s", "ns/collision", "spread", "bytes/circle");
+    for (n = 100; n <= o->max_n; n *= 10) {
+        double cost, lo, hi;
+        size_t bytes;
+        uint64_t min_coll = (uint64_t)(n < 100000 ? 200000 : 2 * n);
+        double rate = exact_rate((int)n, 0.3, o->quick ? 1 : 3, o->quick ? min_coll / 4 : min_coll, &cost, &lo, &hi,
+                                 &bytes);
+        printf("%10ld %14.4g %12.1f %11.4g - %-11.4g %14.1f\n", n, rate, cost, lo, hi, (double)bytes / (double)n);
+        if (csv != NULL)
+            fprintf(csv, "%ld,%.6g,%.6g,%.6g,%.6g,%.6g\n", n, rate, cost, lo, hi, (double)bytes / (double)n);
+        fflush(stdout);
+    }
+    if (csv != NULL)
+        fclose(csv);
+    return 0;
+}
+
+/* "Model only what a scene requires": the same free gas (no walls touched within the run)
+ * with features absent, present but idle, and far away. */
+static int cmd_features(const opts *o)
+{
+    enum { BASE, SEG_CAP, FAR_WALLS, FAR_IMMOVABLE, FAR_BIG, N_VARIANTS };
+    static const char *names[N_VARIANTS] = {"no walls, max_segments = 0", "max_segments = 4, no walls",
+                                            "4 walls 1000 boxes away", "16 immovable circles far away",
+                                            "1 immovable circle r = 2 far away"};
+    bench_scene s;
+    int n = o->quick ? 2000 : 10000, reps = o->quick ? 3 : 9, v, k;
+    double t_run = 5.0, base = 0.0;
+    double *cost[N_VARIANTS], rat[N_VARIANTS];
+    uint64_t coll[N_VARIANTS];
+    FILE *csv = open_csv(o->csv, "variant,ns_per_collision,ns_min,ns_max,collisions,ratio_to_base");
+    bench_scene_gas(&s, n, 0.3, 11);
+    for (v = 0; v < N_VARIANTS; v++)
+        cost[v] = bench_alloc((size_t)reps * sizeof(double));
+    /* rounds rotate the variants so that noise falls on all alike */
+    for (k = 0; k < reps; k++) {
+        for (v = 0; v < N_VARIANTS; v++) {
+            int var = (v + k) % N_VARIANTS, i;
+            world_box b;
+            double t0, L = s.x1;
+            bench_scene far = s;
+            far.n_walls = 0;
+            if (var == FAR_WALLS) {
+                far.n_walls = 4;
+                for (i = 0; i < 4; i++) {
+                    far.walls[i].a.x = (s.walls[i].a.x - 0.5 * L) * 1000.0;
+                    far.walls[i].a.y = (s.walls[i].a.y - 0.5 * L) * 1000.0;
+                    far.walls[i].b.x = (s.walls[i].b.x - 0.5 * L) * 1000.0;
+                    far.walls[i].b.y = (s.walls[i].b.y - 0.5 * L) * 1000.0;
+                }
+            }
+            world_make(&b, &far, CC_MODE_EXACT, 16, var == BASE ? 0 : 4);
+            if (var == FAR_IMMOVABLE || var == FAR_BIG) {
+                for (i = 0; i < (var == FAR_BIG ? 1 : 16); i++) {
+                    cc_circle c;
+                    memset(&c, 0, sizeof c);
+                    c.pos.x = -1000.0 * L + 3.0 * i;
+                    c.pos.y = -1000.0 * L;
+                    c.radius = var == FAR_BIG ? 4.0 * s.r_typ : s.r_typ;
+                    c.mass = INFINITY;
+                    cc_world_add_circle(b.w, &c);
+                }
+            }
+            step(b.w, 1.0 / 60);
+            t0 = bench_now();
+            for (i = 0; i < (int)(t_run * 60); i++)
+                step(b.w, 1.0 / 60);
+            coll[var] = collisions(b.w);
+            cost[var][k] = (bench_now() - t0) * 1e9 / (double)coll[var];
+            world_free(&b);
+        }
+    }
+    printf("%-34s %14s %22s %12s %8s\n", "variant", "ns/collision", "spread", "collisions", "ratio");
+    for (v = N_VARIANTS - 1; v >= 0; v--) {
+        /* ratio: median over rounds of the per-round ratio (neighbours in time share the noise) */
+        double *ratio = bench_alloc((size_t)reps * sizeof *ratio);
+        for (k = 0; k < reps; k++)
+            ratio[k] = cost[v][k] / cost[BASE][k];
+        rat[v] = bench_median(ratio, (size_t)reps);
+        free(ratio);
+    }
+    for (v = 0; v < N_VARIANTS; v++) {
+        double lo, hi, med;
+        bench_range(cost[v], (size_t)reps, &lo, &hi);
+        med = bench_median(cost[v], (size_t)reps);
+        (void)base;
+        printf("%-34s %14.2f %10.2f - %-9.2f %12llu %8.3f%s\n", names[v], med, lo, hi, (unsigned long long)coll[v],
+               rat[v], coll[v] == coll[BASE] ? "" : "  (different collisions!)");
+        if (csv != NULL)
+            fprintf(csv, "%s,%.6g,%.6g,%.6g,%llu,%.6g\n", names[v], med, lo, hi, (unsigned long long)coll[v], rat[v]);
+        if (v == FAR_WALLS)
+            bench_figure("feature_cost_far_walls", rat[v]);
+        if (v == FAR_IMMOVABLE)
+            bench_figure("feature_cost_far_immovable", rat[v]);
+        if (v == SEG_CAP)
+            bench_figure("feature_cost_segment_capacity", rat[v]);
+        free(cost[v]);
+    }
+    bench_scene_free(&s);
+    if (csv != NULL)
+        fclose(csv);
+    return 0;
+}
+
+static int cmd_dump_gas(int n, double phi)
+{
+    bench_scene s;
+    int i;
+    bench_scene_gas(&s, n, phi, 2);
+    printf("# box %.17g %.17g %.17g %.17g\n", s.x0, s.y0, s.x1, s.y1);
+    for (i = 0; i < s.n; i++)
+        printf("%.17g %.17g %.17g %.17g %.17g %.17g\n", s.c[i].pos.x, s.c[i].pos.y, s.c[i].vel.x, s.c[i].vel.y,
+               s.c[i].radius, s.c[i].mass);
+    bench_scene_free(&s);
+    return 0;
+}
+
+/* A peer's trajectory: int32 n, int32 steps, float64 dt, then (steps + 1) x n x (px py vx vy). */
+static int cmd_check_trace(int n, double phi, const char *path)
+{
+    bench_scene s;
+    bench_check k;
+    FILE *f = fopen(path, "rb");
+    int32_t hn, steps, i, j;
+    double dt, *raw, e0 = 0.0;
+    cc_circle *pre, *post;
+    if (f == NULL || fread(&hn, 4, 1, f) != 1 || fread(&steps, 4, 1, f) != 1 || fread(&dt, 8, 1, f) != 1 || hn != n) {
+        fprintf(stderr, "bench_world: bad trace %s\n", path);
+        return 1;
+    }
+    bench_scene_gas(&s, n, phi, 2);
+    bench_check_init(&k, n);
+    raw = bench_alloc((size_t)n * 4 * sizeof *raw);
+    pre = bench_alloc((size_t)n * sizeof *pre);
+    post = bench_alloc((size_t)n * sizeof *post);
+    for (i = 0; i <= steps; i++) {
+        if (fread(raw, sizeof *raw, (size_t)n * 4, f) != (size_t)n * 4) {
+            fprintf(stderr, "bench_world: trace %s ends early\n", path);
+            return 1;
+        }
+        for (j = 0; j < n; j++) {
+            post[j] = s.c[j];
+            post[j].pos.x = raw[4 * j], post[j].pos.y = raw[4 * j + 1];
+            post[j].vel.x = raw[4 * j + 2], post[j].vel.y = raw[4 * j + 3];
+        }
+        if (i == 0)
+            e0 = bench_energy(post, n);
+        else
+            bench_check_step(&k, &s, pre, post, dt);
+        memcpy(pre, post, (size_t)n * sizeof *pre);
+    }
+    fclose(f);
+    printf("tunnelling=%ld escaped=%ld max_overlap_r=%.6g energy_drift=%.6g\n", k.tunnel_circle + k.tunnel_wall,
+           k.escaped, k.max_overlap, fabs(bench_energy(post, n) - e0) / e0);
+    bench_check_free(&k);
+    bench_scene_free(&s);
+    free(raw);
+    free(pre);
+    free(post);
+    return 0;
+}
+
+/* Our world on the peers' terms: the same gas, n, phi, t_end and step, one line like theirs. */
+static int cmd_peer_line(int n, double phi, double t_end, double dt)
+{
+    bench_scene s;
+    run_result rr;
+    bench_scene_gas(&s, n, phi, 2);
+    s.t_end = t_end;
+    memset(&rr, 0, sizeof rr);
+    time_runs(&s, CC_MODE_EXACT, dt, 5, 0.2, &rr);
+    checked_run(&s, CC_MODE_EXACT, dt, NULL, &rr);
+    printf("peer circlecollide n=%d phi=%g dt=%g sec_per_sim_s=%.6g collisions=%llu collisions_per_s=%.6g "
+           "tunnelling=%ld escaped=%ld max_overlap_r=%.6g energy_drift=%.6g\n",
+           n, phi, dt, rr.sec_per_sim_s, (unsigned long long)rr.coll, rr.coll_per_s, rr.tunnel, rr.escaped,
+           rr.max_overlap, rr.energy_drift);
+    bench_scene_free(&s);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    opts o;
+    int k;
+    memset(&o, 0, sizeof o);
+    o.max_n = 1000000;
+    if (argc < 2) {
+        fprintf(stderr, "usage: %s matrix|headline|scaling|features|dump-gas ... [--quick] [--csv FILE]\n", argv[0]);
+        return 2;
+    }
+    if (!strcmp(argv[1], "dump-gas") && argc == 4)
+        return cmd_dump_gas(atoi(argv[2]), atof(argv[3]));
+    if (!strcmp(argv[1], "check-trace") && argc == 5)
+        return cmd_check_trace(atoi(argv[2]), atof(argv[3]), argv[4]);
+    if (!strcmp(argv[1], "peer") && argc == 6)
+        return cmd_peer_line(atoi(argv[2]), atof(argv[3]), atof(argv[4]), atof(argv[5]));
+    for (k = 2; k < argc; k++) {
+        if (!strcmp(argv[k], "--quick"))
+            o.quick = 1;
+        else if (!strcmp(argv[k], "--csv") && k + 1 < argc)
+            o.csv = argv[++k];
+        else if (!strcmp(argv[k], "--max-n") && k + 1 < argc)
+            o.max_n = atol(argv[++k]);
+        else {
+            fprintf(stderr, "bench_world: unknown argument %s\n", argv[k]);
+            return 2;
+        }
+    }
+    if (!strcmp(argv[1], "matrix"))
+        return cmd_matrix(&o);
+    if (!strcmp(argv[1], "headline"))
+        return cmd_headline(&o);
+    if (!strcmp(argv[1], "scaling"))
+        return cmd_scaling(&o);
+    if (!strcmp(argv[1], "features"))
+        return cmd_features(&o);
+    fprintf(stderr, "bench_world: unknown command %s\n", argv[1]);
+    return 2;
+}

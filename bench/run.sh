@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# The benchmarks in one run: bench/run.sh [--quick]
+#
+# Full run (several minutes): builds the benchmarks (Release) in build-bench/, installs the
+# peers it can (Box2D 3.1 from the pyb2d3 wheel; billiards, pymunk and matplotlib in a venv
+# there), runs the pair, world, scaling, feature and peer benchmarks, and writes
+# docs/BENCHMARKS.md with its plots (docs/bench_*.png).
+# --quick (under a minute once built): small sizes, prints the headline `figure NAME VALUE`
+# lines only, writes nothing in docs/.
+# Environment: BENCH_BUILD (build folder, default build-bench), CC_JOBS (default 2).
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${BENCH_BUILD:-$root/build-bench}
+jobs=${CC_JOBS:-2}
+quick=0
+case "${1:-}" in
+  --quick) quick=1 ;;
+  "") ;;
+  *) echo "usage: bench/run.sh [--quick]" >&2; exit 2 ;;
+esac
+export PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_ROOT_USER_ACTION=ignore
+mkdir -p "$build"
+log=$build/run.log
+: >"$log"
+
+# Box2D 3.1's C library, headers and CMake package from the pyb2d3 wheel (as scripts/test.sh)
+b2d=$build/_deps/pyb2d3
+if [ ! -f "$b2d/lib64/cmake/box2d/box2dConfig.cmake" ]; then
+  python3 -m pip install -q --no-deps --target "$b2d" pyb2d3==0.11.1 >>"$log" 2>&1 ||
+    echo "bench: pyb2d3 did not install; Box2D columns are skipped" >&2
+fi
+
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$b2d" \
+  -DCC_BUILD_TESTS=OFF -DCC_BUILD_DEMO=OFF >>"$log" 2>&1
+targets=(bench_pair bench_world)
+grep -q "Box2D found" "$log" && targets+=(bench_box2d_world)
+cmake --build "$build" -j"$jobs" --target "${targets[@]}" >>"$log" 2>&1 || {
+  tail -30 "$log" >&2
+  exit 1
+}
+bin=$build/bench
+
+if [ $quick = 1 ]; then
+  # 2e5 pairs are enough for stable ratios; the reference is skipped (it is the slow part)
+  "$bin/bench_pair" --pairs 200000 --rounds 5 --no-reference | tee -a "$log" | grep '^figure '
+  "$bin/bench_world" headline --quick | tee -a "$log" | grep '^figure '
+  "$bin/bench_world" features --quick | tee -a "$log" | grep '^figure '
+  echo "(details: $log)"
+  exit 0
+fi
+
+# Python peers and the plots: a venv in the build folder
+venv=$build/venv
+if [ ! -x "$venv/bin/python" ]; then
+  python3 -m venv "$venv" >>"$log" 2>&1
+fi
+"$venv/bin/python" -m pip install -q matplotlib billiards pymunk >>"$log" 2>&1 ||
+  echo "bench: some Python peers did not install (see $log); their rows are skipped" >&2
+
+out=$build/results
+rm -rf "$out"
+mkdir -p "$out"
+{
+  echo "date: $(date -u '+%Y-%m-%d %H:%M UTC')"
+  echo "cpu: $(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2 | sed 's/^ //') ($(nproc) cores)"
+  echo "os: $(uname -sr)"
+  echo "compiler: $(${CC:-cc} --version | head -1)"
+  echo "commit: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  echo "load: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
+} >"$out/machine.txt"
+
+echo "== pair level" | tee -a "$log"
+"$bin/bench_pair" --pairs 1000000 --rounds 9 --csv "$out/pair.csv" | tee "$out/pair.txt"
+echo "== world: scenes x modes x steps" | tee -a "$log"
+"$bin/bench_world" matrix --csv "$out/matrix.csv" | tee "$out/matrix.txt"
+echo "== world: EXACT headline" | tee -a "$log"
+"$bin/bench_world" headline | tee "$out/headline.txt"
+echo "== world: scaling" | tee -a "$log"
+"$bin/bench_world" scaling --csv "$out/scaling.csv" | tee "$out/scaling.txt"
+echo "== world: features a scene does not use" | tee -a "$log"
+"$bin/bench_world" features --csv "$out/features.csv" | tee "$out/features.txt"
+
+echo "== peers on the gas (n = 1000, phi = 0.3)" | tee -a "$log"
+dt=0.016666666666666666
+{
+  "$bin/bench_world" peer 1000 0.3 10 $dt
+  [ -x "$bin/bench_box2d_world" ] && "$bin/bench_box2d_world" 1000 0.3 10 $dt 4
+  "$venv/bin/python" "$root/bench/peers.py" "$bin/bench_world" 1000 0.3 10 $dt "$out" pymunk
+  # billiards needs ~15 s of wall time per simulated second here: a shorter run, same rate
+  "$bin/bench_world" peer 1000 0.3 1 $dt
+  "$venv/bin/python" "$root/bench/peers.py" "$bin/bench_world" 1000 0.3 1 $dt "$out" billiards
+} 2>>"$log" | tee "$out/peers.txt"
+rm -f "$out"/trace-*.bin
+
+"$venv/bin/python" "$root/bench/report.py" "$out" "$root/docs" "bench/run.sh"
+grep -h '^figure ' "$out"/*.txt
+echo "wrote docs/BENCHMARKS.md"
