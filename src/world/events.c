@@ -1,70 +1,80 @@
-/* The event queue: an indexed binary min-heap holding each body that has a predicted event
+/* The event queue: an indexed 4-ary min-heap (half the depth of a binary one: fewer
+ * unpredictable branches and scattered writes per update) holding each body that has a predicted event
  * (one per body, so its size is bounded by max_circles), keyed by (event time, body id). The id
- * breaks ties, never an address: the order of simultaneous events is deterministic. hpos[id]
- * is the body's index in the heap, -1 when it is not queued. */
+ * breaks ties, never an address: the order of simultaneous events is deterministic. Entries
+ * carry their key, so sifting reads only the heap; hpos[id] is the body's index in the heap,
+ * -1 when it is not queued. */
 #include "world_internal.h"
 
-static int cc__before(const cc__event *ev, int32_t a, int32_t b)
+static int cc__before(const cc__heap_entry *a, const cc__heap_entry *b)
 {
-    return ev[a].t < ev[b].t || (ev[a].t == ev[b].t && a < b);
+    return a->key < b->key || (a->key == b->key && a->id < b->id);
 }
 
-static void cc__sift_up(int32_t *heap, int32_t *hpos, const cc__event *ev, int k)
+static void cc__sift_up(cc__heap_entry *heap, int32_t *hpos, int k, cc__heap_entry e)
 {
-    int32_t id = heap[k];
     while (k > 0) {
-        int p = (k - 1) >> 1;
-        if (!cc__before(ev, id, heap[p]))
+        int p = (k - 1) >> 2;
+        if (!cc__before(&e, &heap[p]))
             break;
         heap[k] = heap[p];
-        hpos[heap[k]] = k;
+        hpos[heap[k].id] = k;
         k = p;
     }
-    heap[k] = id;
-    hpos[id] = k;
+    heap[k] = e;
+    hpos[e.id] = k;
 }
 
-static void cc__sift_down(int32_t *heap, int32_t *hpos, const cc__event *ev, int n, int k)
+static void cc__sift_down(cc__heap_entry *heap, int32_t *hpos, int n, int k, cc__heap_entry e)
 {
-    int32_t id = heap[k];
     for (;;) {
-        int c = 2 * k + 1;
+        int c = 4 * k + 1, m = c, q, end;
         if (c >= n)
             break;
-        if (c + 1 < n && cc__before(ev, heap[c + 1], heap[c]))
-            c++;
-        if (!cc__before(ev, heap[c], id))
+        end = c + 4 < n ? c + 4 : n;
+        for (q = c + 1; q < end; q++)
+            m = cc__before(&heap[q], &heap[m]) ? q : m;
+        if (!cc__before(&heap[m], &e))
             break;
-        heap[k] = heap[c];
-        hpos[heap[k]] = k;
-        k = c;
+        heap[k] = heap[m];
+        hpos[heap[k].id] = k;
+        k = m;
     }
-    heap[k] = id;
-    hpos[id] = k;
+    heap[k] = e;
+    hpos[e.id] = k;
 }
 
-void cc__heap_update(cc_world *w, int id)
+/* Puts entry e at index k, where it may be out of order in either direction. */
+static void cc__place(cc_world *w, int k, cc__heap_entry e)
 {
-    int32_t *heap = CC__ARR(w, int32_t, off_heap), *hpos = CC__ARR(w, int32_t, off_hpos);
-    const cc__event *ev = CC__CARR(w, cc__event, off_ev);
+    cc__heap_entry *heap = CC__ARR(w, cc__heap_entry, off_heap);
+    int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
+    if (k > 0 && cc__before(&e, &heap[(k - 1) >> 2]))
+        cc__sift_up(heap, hpos, k, e);
+    else
+        cc__sift_down(heap, hpos, w->heap_n, k, e);
+}
+
+void cc__heap_update(cc_world *w, int id, double key)
+{
+    int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
+    cc__heap_entry e;
     int k = hpos[id];
+    e.key = key;
+    e.id = id;
+    e.pad_ = 0;
     if (k < 0) {
         k = w->heap_n++;
-        heap[k] = id;
-        hpos[id] = k;
-        cc__sift_up(heap, hpos, ev, k);
+        cc__sift_up(CC__ARR(w, cc__heap_entry, off_heap), hpos, k, e);
         return;
     }
-    if (k > 0 && cc__before(ev, id, heap[(k - 1) >> 1]))
-        cc__sift_up(heap, hpos, ev, k);
-    else
-        cc__sift_down(heap, hpos, ev, w->heap_n, k);
+    cc__place(w, k, e);
 }
 
 void cc__heap_remove(cc_world *w, int id)
 {
-    int32_t *heap = CC__ARR(w, int32_t, off_heap), *hpos = CC__ARR(w, int32_t, off_hpos);
-    const cc__event *ev = CC__CARR(w, cc__event, off_ev);
+    cc__heap_entry *heap = CC__ARR(w, cc__heap_entry, off_heap);
+    int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
     int k = hpos[id], last;
     if (k < 0)
         return;
@@ -72,12 +82,15 @@ void cc__heap_remove(cc_world *w, int id)
     last = --w->heap_n;
     if (k == last)
         return;
-    heap[k] = heap[last];
-    hpos[heap[k]] = k;
-    if (k > 0 && cc__before(ev, heap[k], heap[(k - 1) >> 1]))
-        cc__sift_up(heap, hpos, ev, k);
-    else
-        cc__sift_down(heap, hpos, ev, w->heap_n, k);
+    cc__place(w, k, heap[last]);
 }
 
-int cc__heap_top(const cc_world *w) { return w->heap_n > 0 ? CC__CARR(w, int32_t, off_heap)[0] : -1; }
+int cc__heap_top(const cc_world *w)
+{
+    return w->heap_n > 0 ? CC__CARR(w, cc__heap_entry, off_heap)[0].id : -1;
+}
+
+double cc__heap_top_key(const cc_world *w)
+{
+    return w->heap_n > 0 ? CC__CARR(w, cc__heap_entry, off_heap)[0].key : HUGE_VAL;
+}

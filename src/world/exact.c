@@ -1,7 +1,8 @@
-/* EXACT mode: event-driven stepping. The queue holds one predicted event per moving body; events
- * are taken in (time, id) order up to the end of the step. A collision event whose partner's
- * count changed since it was predicted is stale: the body predicts again from now. Only the
- * bodies an event involves are advanced (lazily) and predicted again. */
+/* EXACT mode: event-driven stepping. The queue holds each moving body once, keyed by its next
+ * event (its predicted hit or its cell crossing, whichever comes first); events are taken in
+ * (time, id) order up to the end of the step. A hit on a circle whose count changed since the
+ * prediction is stale: the body predicts again from now. Only the bodies an event involves are
+ * advanced (lazily) and predicted again. */
 #include "world_internal.h"
 
 int cc__step_exact(cc_world *w, double t_end)
@@ -13,32 +14,31 @@ int cc__step_exact(cc_world *w, double t_end)
         cc__rebuild(w);
     for (;;) {
         int i = cc__heap_top(w), j;
-        cc__event e;
+        double t = cc__heap_top_key(w);
+        const cc__event *e;
         cc__touch tc;
-        if (i < 0 || EV[i].t > t_end)
+        if (i < 0 || t > t_end)
             break;
         if (done == w->max_events)
             return CC_EVENT_LIMIT; /* w->now is the time of the last event processed */
         done++;
         w->stats.events++;
-        e = EV[i];
-        if (e.t > w->now)
-            w->now = e.t;
-        switch (e.kind) {
-        case CC__EV_CROSS:
-            cc__advance_body(&B[i], w->now);
-            cc__grid_move(w, i, e.partner);
+        e = &EV[i];
+        if (t > w->now)
+            w->now = t;
+        cc__advance_body(&B[i], w->now);
+        if (e->t_cross < e->t) {
+            int dir = e->dir;
+            cc__grid_move(w, i, dir);
             w->stats.cell_crossings++;
-            cc__predict(w, i);
-            break;
-        case CC__EV_CIRCLE:
-            j = e.partner;
-            if (!(B[j].flags & CC__ALIVE) || B[j].count != e.pcount) {
+            cc__predict_crossed(w, i, dir);
+        } else if (e->kind == CC__EV_CIRCLE) {
+            j = e->partner;
+            if (!(B[j].flags & CC__ALIVE) || B[j].count != e->pcount) {
                 w->stats.stale_events++;
                 cc__predict(w, i);
-                break;
+                continue;
             }
-            cc__advance_body(&B[i], w->now);
             cc__advance_body(&B[j], w->now);
             tc.a = i;
             tc.b = j;
@@ -46,15 +46,12 @@ int cc__step_exact(cc_world *w, double t_end)
             (void)cc__world_resolve(w, &tc, 1);
             cc__predict(w, i);
             cc__predict(w, j);
-            break;
-        default: /* CC__EV_SEGMENT */
-            cc__advance_body(&B[i], w->now);
+        } else {
             tc.a = i;
             tc.b = -1;
-            tc.segment = e.partner;
+            tc.segment = e->partner;
             (void)cc__world_resolve(w, &tc, 1);
             cc__predict(w, i);
-            break;
         }
     }
     w->now = t_end;

@@ -15,13 +15,6 @@ int64_t cc__grid_coord(const cc_world *w, double x)
     return (int64_t)c;
 }
 
-uint32_t cc__grid_slot(const cc_world *w, int64_t cx, int64_t cy)
-{
-    uint64_t h = (uint64_t)cx * 0x9E3779B97F4A7C15u ^ (uint64_t)cy * 0xC2B2AE3D27D4EB4Fu;
-    h ^= h >> 29;
-    return (uint32_t)h & w->slot_mask;
-}
-
 void cc__grid_clear(cc_world *w)
 {
     int32_t *slot = CC__ARR(w, int32_t, off_slot);

@@ -1,9 +1,10 @@
-/* EXACT mode's prediction: a moving body's earliest event from now on, among a contact with a
- * circle of its 3x3 cell neighbourhood (or of the whole world when it is small), with a large
- * circle, with a wall, and the crossing into the next grid cell. The search horizon shrinks as
- * candidates are found, and never reaches past the cell crossing: when the body enters a new
- * cell it predicts again with its new neighbours. Bodies at rest predict nothing: whatever
- * moves towards them holds the event. */
+/* EXACT mode's prediction: a moving body's earliest hit (a circle of its 3x3 cell
+ * neighbourhood, or of the whole world when it is small; a large circle; a wall) and the time
+ * it leaves its grid cell. Circles are searched without a time limit, so that after a cell
+ * crossing the hit already known stays the best among the cells still adjacent and only the
+ * newly adjacent row or column of cells is searched (unless the known hit went stale). Walls
+ * are searched up to min(hit, crossing) and only when their box is within reach. Bodies at rest
+ * predict nothing: whatever moves towards them holds the event. */
 #include "world_internal.h"
 
 #include "precision_double.h"
@@ -12,17 +13,18 @@
 #include "precision_end.h"
 
 typedef struct cc__cand {
-    double t; /* relative to now */
+    double t; /* absolute */
     int kind, partner;
     uint32_t pcount;
 } cc__cand;
 
 /* Contact of moving body i (at now) with circle j: a hit approaching faster than rounding, or
  * an overlap left by rounding whose bodies approach (a contact now). */
-static void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body *bi, int j, double now, cc__cand *best, uint64_t *tests)
+static void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body *bi, int j, double now,
+                           cc__cand *best, uint64_t *tests)
 {
     const cc__body *bj = &B[j];
-    double dt = now - bj->t, t;
+    double dt = now - bj->t, t, R, dv2, cr;
     cc_vec2 dp, dv, n;
     int r;
     if (isinf(bi->m) && isinf(bj->m))
@@ -34,20 +36,30 @@ static void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body 
     if (!(dp.x * dv.x + dp.y * dv.y < 0.0))
         return; /* never closer than now */
     ++*tests;
-    r = cc__sweep_rel(dp, dv, bi->r + bj->r, 0, 0, best->t, &t, &n);
-    if (r == CC_MISS || !(t < best->t))
+    /* closest approach |dp x dv| / |dv| not below R, and not overlapping now: a miss (the
+     * solver decides every case near the boundary) */
+    R = bi->r + bj->r;
+    dv2 = dv.x * dv.x + dv.y * dv.y;
+    cr = dp.x * dv.y - dp.y * dv.x;
+    if (cr * cr > 1.0000001 * dv2 * R * R && dp.x * dp.x + dp.y * dp.y > R * R)
+        return;
+    r = cc__sweep_rel(dp, dv, R, 0, 0, best->t - now, &t, &n);
+    if (r == CC_MISS || !(now + t < best->t))
         return;
     if (!cc__approaching(w, -cc__dot(dv, n), fabs(bi->vx) + fabs(bi->vy) + fabs(bj->vx) + fabs(bj->vy)))
         return;
-    best->t = t; /* 0 for an overlap */
+    best->t = now + t; /* now for an overlap */
     best->kind = CC__EV_CIRCLE;
     best->partner = j;
     best->pcount = bj->count;
 }
 
-static void cc__try_segments(cc_world *w, const cc__body *bi, cc__cand *best)
+/* Walls within reach before min(best, t_cross). */
+static void cc__try_segments(cc_world *w, const cc__body *bi, double t_cross, cc__cand *best)
 {
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
+    double now = w->now, h = (best->t < t_cross ? best->t : t_cross) - now;
+    double x0 = -HUGE_VAL, x1 = HUGE_VAL, y0 = -HUGE_VAL, y1 = HUGE_VAL;
     cc_circle c;
     cc_contact k;
     int s;
@@ -57,21 +69,33 @@ static void cc__try_segments(cc_world *w, const cc__body *bi, cc__cand *best)
     c.vel.y = bi->vy;
     c.radius = bi->r;
     c.mass = 1.0;
+    if (h < HUGE_VAL) { /* the path's box, grown by the radius (and a little, for rounding) */
+        double ex = bi->px + bi->vx * h, ey = bi->py + bi->vy * h, g = bi->r * 1.001;
+        x0 = (ex < bi->px ? ex : bi->px) - g;
+        x1 = (ex < bi->px ? bi->px : ex) + g;
+        y0 = (ey < bi->py ? ey : bi->py) - g;
+        y1 = (ey < bi->py ? bi->py : ey) + g;
+    }
     for (s = 0; s < w->n_segments; s++) {
-        int r = cc_sweep_segment(&c, &seg[s], best->t, &k);
+        const cc_segment *q = &seg[s];
+        int r;
+        if ((q->a.x < x0 && q->b.x < x0) || (q->a.x > x1 && q->b.x > x1) || (q->a.y < y0 && q->b.y < y0) ||
+            (q->a.y > y1 && q->b.y > y1))
+            continue;
         w->stats.pairs_tested++;
-        if (r == CC_MISS || r < 0 || !(k.t < best->t))
+        r = cc_sweep_segment(&c, q, best->t - now, &k);
+        if (r == CC_MISS || r < 0 || !(now + k.t < best->t))
             continue;
         if (!cc__approaching(w, cc__dot(c.vel, k.normal), fabs(c.vel.x) + fabs(c.vel.y)))
             continue;
-        best->t = k.t;
+        best->t = now + k.t;
         best->kind = CC__EV_SEGMENT;
         best->partner = s;
     }
 }
 
-/* Time until body b (at now, in cell c) leaves its cell, and through which side. */
-static void cc__try_cross(const cc_world *w, const cc__body *b, const cc__cell *c, cc__cand *best)
+/* When body b (at now, in cell c) leaves its cell, and through which side. */
+static double cc__cross_time(const cc_world *w, const cc__body *b, const cc__cell *c, int32_t *dir)
 {
     double tx = HUGE_VAL, ty = HUGE_VAL;
     int dx = -1, dy = -1;
@@ -93,29 +117,59 @@ static void cc__try_cross(const cc_world *w, const cc__body *b, const cc__cell *
         tx = ty;
         dx = dy;
     }
+    *dir = dx;
     if (dx < 0)
-        return;
-    best->t = tx > 0.0 ? tx : 0.0;
-    best->kind = CC__EV_CROSS;
-    best->partner = dx;
+        return HUGE_VAL;
+    return w->now + (tx > 0.0 ? tx : 0.0);
+}
+
+/* Circles filed under cell (x, y), tested against body i. */
+static void cc__scan_cell(const cc_world *w, const cc__body *B, const cc__cell *cell, const int32_t *slot, int i,
+                          int64_t x, int64_t y, cc__cand *best, uint64_t *tests)
+{
+    int j;
+    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = cell[j].next)
+        if (cell[j].cx == x && cell[j].cy == y && j != i)
+            cc__try_circle(w, B, &B[i], j, w->now, best, tests);
+}
+
+/* Stores the prediction and queues the body by its earlier event. */
+static void cc__finish(cc_world *w, int i, cc__cand *best, double t_cross, int32_t dir)
+{
+    cc__body *bi = &CC__ARR(w, cc__body, off_body)[i];
+    cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
+    if (!isinf(bi->m) && w->n_segments > 0)
+        cc__try_segments(w, bi, t_cross, best);
+    ev->t = best->t;
+    ev->kind = best->kind;
+    ev->partner = best->partner;
+    ev->pcount = best->pcount;
+    ev->t_cross = t_cross;
+    ev->dir = dir;
+    if (best->kind == CC__EV_NONE && !(t_cross < HUGE_VAL))
+        cc__heap_remove(w, i);
+    else
+        cc__heap_update(w, i, best->t < t_cross ? best->t : t_cross);
 }
 
 void cc__predict(cc_world *w, int i)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
     cc__body *bi = &B[i];
-    cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
     const cc__cell *cell = CC__CARR(w, cc__cell, off_cell);
-    double now = w->now;
+    double t_cross = HUGE_VAL;
+    int32_t dir = -1;
     uint64_t tests = 0;
     cc__cand best;
     int j;
     if (!(bi->flags & CC__ALIVE) || (bi->vx == 0.0 && bi->vy == 0.0)) {
+        cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
         ev->kind = CC__EV_NONE;
+        ev->t = ev->t_cross = HUGE_VAL;
         cc__heap_remove(w, i);
         return;
     }
-    cc__advance_body(bi, now);
+    cc__advance_body(bi, w->now);
     best.t = HUGE_VAL;
     best.kind = CC__EV_NONE;
     best.partner = -1;
@@ -123,33 +177,55 @@ void cc__predict(cc_world *w, int i)
     if (!w->use_grid || (bi->flags & CC__LARGE)) {
         for (j = 0; j < w->id_end; j++)
             if (j != i && (B[j].flags & CC__ALIVE))
-                cc__try_circle(w, B, bi, j, now, &best, &tests);
+                cc__try_circle(w, B, bi, j, w->now, &best, &tests);
     } else {
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
         int64_t cx = cell[i].cx, cy = cell[i].cy, x, y;
-        cc__try_cross(w, bi, &cell[i], &best);
         for (y = cy - 1; y <= cy + 1; y++)
             for (x = cx - 1; x <= cx + 1; x++)
-                for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = cell[j].next)
-                    if (cell[j].cx == x && cell[j].cy == y && j != i)
-                        cc__try_circle(w, B, bi, j, now, &best, &tests);
+                cc__scan_cell(w, B, cell, slot, i, x, y, &best, &tests);
         for (j = w->large_head; j >= 0; j = cell[j].next)
             if (j != i)
-                cc__try_circle(w, B, bi, j, now, &best, &tests);
+                cc__try_circle(w, B, bi, j, w->now, &best, &tests);
+        t_cross = cc__cross_time(w, bi, &cell[i], &dir);
     }
     w->stats.pairs_tested += tests;
-    if (!isinf(bi->m) && w->n_segments > 0)
-        cc__try_segments(w, bi, &best);
-    if (best.kind == CC__EV_NONE) {
-        ev->kind = CC__EV_NONE;
-        cc__heap_remove(w, i);
+    cc__finish(w, i, &best, t_cross, dir);
+}
+
+void cc__predict_crossed(cc_world *w, int i, int dir)
+{
+    cc__body *B = CC__ARR(w, cc__body, off_body);
+    const cc__cell *cell = CC__CARR(w, cc__cell, off_cell);
+    const cc__event *ev = &CC__CARR(w, cc__event, off_ev)[i];
+    const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+    int64_t cx = cell[i].cx, cy = cell[i].cy, k;
+    uint64_t tests = 0;
+    double t_cross;
+    int32_t ndir;
+    cc__cand best;
+    if (ev->kind == CC__EV_CIRCLE &&
+        (!(B[ev->partner].flags & CC__ALIVE) || B[ev->partner].count != ev->pcount)) {
+        cc__predict(w, i); /* the known hit is stale: the old cells need a new look too */
         return;
     }
-    ev->t = now + best.t;
-    ev->kind = best.kind;
-    ev->partner = best.partner;
-    ev->pcount = best.pcount;
-    cc__heap_update(w, i);
+    best.t = ev->t;
+    best.kind = ev->kind;
+    best.partner = ev->partner;
+    best.pcount = ev->pcount;
+    for (k = -1; k <= 1; k++) {
+        if (dir == 0)
+            cc__scan_cell(w, B, cell, slot, i, cx + 1, cy + k, &best, &tests);
+        else if (dir == 1)
+            cc__scan_cell(w, B, cell, slot, i, cx - 1, cy + k, &best, &tests);
+        else if (dir == 2)
+            cc__scan_cell(w, B, cell, slot, i, cx + k, cy + 1, &best, &tests);
+        else
+            cc__scan_cell(w, B, cell, slot, i, cx + k, cy - 1, &best, &tests);
+    }
+    w->stats.pairs_tested += tests;
+    t_cross = cc__cross_time(w, &B[i], &cell[i], &ndir);
+    cc__finish(w, i, &best, t_cross, ndir);
 }
 
 /* After body id appeared, moved or stopped: every moving body that could meet it predicts

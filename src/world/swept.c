@@ -94,6 +94,7 @@ static void cc__find_impacts(cc_world *w, double dt)
     for (i = 0; i < w->id_end; i++) {
         double d;
         ev[i].kind = CC__EV_NONE;
+        ev[i].t = ev[i].t_cross = HUGE_VAL;
         if (!(B[i].flags & CC__ALIVE))
             continue;
         d = (fabs(B[i].vx) + fabs(B[i].vy)) * dt;
@@ -158,7 +159,7 @@ static void cc__find_impacts(cc_world *w, double dt)
     for (i = 0; i < w->id_end; i++) {
         B[i].flags &= ~CC__FAST;
         if (ev[i].kind != CC__EV_NONE)
-            cc__heap_update(w, i);
+            cc__heap_update(w, i, ev[i].t);
     }
 }
 

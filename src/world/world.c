@@ -73,7 +73,7 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[0] = n * sizeof(cc__body);
     sizes[1] = n * sizeof(cc__event);
     sizes[2] = n * sizeof(cc__cell);
-    sizes[3] = n * sizeof(int32_t); /* heap */
+    sizes[3] = n * sizeof(cc__heap_entry); /* heap */
     sizes[4] = n * sizeof(int32_t); /* heap positions */
     sizes[5] = n * sizeof(int32_t); /* free ids */
     sizes[6] = (size_t)cc__slots(d->max_circles) * sizeof(int32_t);

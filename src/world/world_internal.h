@@ -26,19 +26,31 @@ typedef struct cc__body {
 #define CC__LARGE 2  /* wider than a grid cell (immovable only): kept on the large list */
 #define CC__MOVED 4  /* scratch: moved by an overlap pass, to be re-filed in the grid */
 
-/* Event kinds: what a body's one predicted event is. */
+/* What a body's predicted hit is. */
 #define CC__EV_NONE 0
 #define CC__EV_CIRCLE 1  /* partner = circle id, pcount = its count when predicted */
 #define CC__EV_SEGMENT 2 /* partner = segment id */
-#define CC__EV_CROSS 3   /* partner = direction 0:+x 1:-x 2:+y 3:-y */
 
+/* A body's predictions: its earliest hit, and (EXACT with a grid) when it leaves its cell and
+ * through which side (dir 0:+x 1:-x 2:+y 3:-y). The hit is searched without a time limit among
+ * the circles of the 3x3 cells, so that on a crossing only the newly adjacent cells need a look;
+ * walls are searched up to min(hit, crossing) and looked at again after each crossing. */
 typedef struct cc__event {
-    double t; /* absolute world time */
+    double t;       /* absolute time of the hit, +INFINITY when none */
+    double t_cross; /* absolute time of the cell crossing, +INFINITY when none */
     int32_t kind;
     int32_t partner;
     uint32_t pcount;
-    int32_t pad_;
+    int32_t dir;
 } cc__event;
+
+/* A heap entry: the body's next event time with its id beside it, so that sifting touches
+ * only the heap's own memory. */
+typedef struct cc__heap_entry {
+    double key;
+    int32_t id;
+    int32_t pad_;
+} cc__heap_entry;
 
 /* A body's grid cell and its links in the list of that cell's hash slot (or the large list). */
 typedef struct cc__cell {
@@ -103,9 +115,10 @@ static inline void cc__advance_body(cc__body *b, double t)
 double cc__world_cell_size(const cc_world *w);
 
 /* ---- events.c: indexed binary heap of bodies keyed by (event time, id) ---- */
-void cc__heap_update(cc_world *w, int id); /* insert or move to its place */
+void cc__heap_update(cc_world *w, int id, double key); /* insert or move to its place */
 void cc__heap_remove(cc_world *w, int id);
 int cc__heap_top(const cc_world *w); /* -1 when empty */
+double cc__heap_top_key(const cc_world *w); /* +INFINITY when empty */
 
 /* ---- grid.c: hashed uniform cell list ---- */
 void cc__grid_clear(cc_world *w);
@@ -113,10 +126,20 @@ void cc__grid_insert(cc_world *w, int id); /* files the body by its position at 
 void cc__grid_remove(cc_world *w, int id);
 void cc__grid_move(cc_world *w, int id, int dir); /* a cell crossing */
 int64_t cc__grid_coord(const cc_world *w, double x);
-uint32_t cc__grid_slot(const cc_world *w, int64_t cx, int64_t cy);
+/* Blocks of 16 x 16 cells map to consecutive runs of slots (row by row), so that the 3x3 cells
+ * around a circle mostly share cache lines; each block starts at a hashed offset, so that
+ * scenes of any shape spread over the whole table. */
+static inline uint32_t cc__grid_slot(const cc_world *w, int64_t cx, int64_t cy)
+{
+    uint64_t h = (uint64_t)(cx >> 4) * UINT64_C(0x9E3779B97F4A7C15) ^ (uint64_t)(cy >> 4) * UINT64_C(0xC2B2AE3D27D4EB4F);
+    h ^= h >> 29;
+    return ((uint32_t)h + (uint32_t)((cx & 15) | (cy & 15) << 4)) & w->slot_mask;
+}
 
 /* ---- predict.c: a body's earliest event (EXACT) ---- */
 void cc__predict(cc_world *w, int id);
+/* after body id crossed into a new cell through side dir: only the new cells are searched */
+void cc__predict_crossed(cc_world *w, int id, int dir);
 /* re-predicts every movable body that could meet body id (its neighbourhood) */
 void cc__predict_neighbours(cc_world *w, int id);
 /* True when approach speed vn (> 0: closing) is a collision: faster than the rounding of the
