@@ -447,6 +447,102 @@ static void test_sweep_segment_properties(void)
     TEST_ASSERT_TRUE(hits > N_CASES / 5);
 }
 
+/* A finite number of random sign and magnitude anywhere in the precision's range (zero now
+ * and then): for the robustness test below. */
+static double wild(uint64_t *s)
+{
+    int max_exp = (int)(log2(REAL_MAX)) - 1, k = rng_int(s, 2 * max_exp + 1) - max_exp;
+    if (rng_int(s, 16) == 0)
+        return 0;
+    return (rng_int(s, 2) ? 1 : -1) * ldexp(rng_range(s, 1, 2), k);
+}
+
+static int unit_ok(Vec n) { return fabs(hypot((double)n.x, (double)n.y) - 1) <= 8 * EPS; }
+
+/* Inputs with magnitudes anywhere from the smallest normal to the largest finite number, mixed
+ * freely (differences that overflow, radii tiny against distances and the reverse): the
+ * answer is always one of the contract's codes, and every number written is finite: t in
+ * [0, t_max], unit normals, finite points and depths. Any NaN or Inf here is a bug, and the
+ * sanitizer build also catches undefined behaviour on these paths. */
+static void test_extreme_inputs_never_produce_nan(void)
+{
+    uint64_t seed = 8;
+    int i, counts[3] = {0, 0, 0};
+    for (i = 0; i < N_CASES; i++) {
+        Circle a = circle(wild(&seed), wild(&seed), wild(&seed), wild(&seed), fabs(wild(&seed)), 1);
+        Circle b = circle(wild(&seed), wild(&seed), wild(&seed), wild(&seed), fabs(wild(&seed)), 1);
+        Segment w = segment(wild(&seed), wild(&seed), wild(&seed), wild(&seed));
+        Contact k = sentinel_contact();
+        double t_max = rng_int(&seed, 2) ? INFINITY : fabs(wild(&seed));
+        int r;
+        if (!(a.radius > 0))
+            a.radius = 1;
+        if (!(b.radius > 0))
+            b.radius = 1;
+        r = F(cc_sweep)(&a, &b, (Real)t_max, &k);
+        TEST_ASSERT_TRUE(r == CC_MISS || r == CC_HIT || r == CC_OVERLAP);
+        counts[r]++;
+        if (r != CC_MISS) {
+            TEST_ASSERT_TRUE_MESSAGE(k.t >= 0 && k.t <= (Real)t_max, "t outside [0, t_max]");
+            TEST_ASSERT_TRUE_MESSAGE(unit_ok(k.normal), "normal not a unit vector");
+            TEST_ASSERT_TRUE_MESSAGE(isfinite(k.point.x) && isfinite(k.point.y), "point not finite");
+            TEST_ASSERT_TRUE_MESSAGE(isfinite(k.depth) && k.depth >= 0, "depth not finite");
+        }
+        if (r == CC_OVERLAP) { /* the contract: the cc_detect_static contact */
+            Contact d = sentinel_contact();
+            TEST_ASSERT_EQUAL_INT(CC_OVERLAP, F(cc_detect_static)(&a, &b, &d));
+            TEST_ASSERT_EQUAL_MEMORY(&d, &k, sizeof k);
+        }
+        k = sentinel_contact();
+        r = F(cc_sweep_segment)(&a, &w, (Real)t_max, &k);
+        TEST_ASSERT_TRUE(r == CC_MISS || r == CC_HIT || r == CC_OVERLAP);
+        if (r != CC_MISS) {
+            TEST_ASSERT_TRUE_MESSAGE(k.t >= 0 && k.t <= (Real)t_max, "segment: t outside [0, t_max]");
+            TEST_ASSERT_TRUE_MESSAGE(unit_ok(k.normal), "segment: normal not a unit vector");
+            TEST_ASSERT_TRUE_MESSAGE(isfinite(k.point.x) && isfinite(k.point.y), "segment: point not finite");
+            TEST_ASSERT_TRUE_MESSAGE(isfinite(k.depth) && k.depth >= 0, "segment: depth not finite");
+        }
+        k = sentinel_contact();
+        r = F(cc_detect_static)(&a, &b, &k);
+        TEST_ASSERT_TRUE(r == CC_MISS || r == CC_OVERLAP);
+        if (r == CC_OVERLAP) {
+            TEST_ASSERT_TRUE_MESSAGE(unit_ok(k.normal), "detect: normal not a unit vector");
+            TEST_ASSERT_TRUE_MESSAGE(isfinite(k.depth) && k.depth > 0, "detect: depth");
+            TEST_ASSERT_TRUE_MESSAGE(isfinite(k.point.x) && isfinite(k.point.y), "detect: point not finite");
+            r = F(cc_separate)(&a, &b);
+            TEST_ASSERT_TRUE(r == CC_OVERLAP);
+            TEST_ASSERT_TRUE_MESSAGE(isfinite(a.pos.x) && isfinite(a.pos.y) && isfinite(b.pos.x) && isfinite(b.pos.y),
+                                     "separate: positions not finite");
+        }
+        {
+            Circle c = a, d = b, c0 = a, d0 = b;
+            Contact kn;
+            double ang = rng_range(&seed, 0, 6.283185307179586);
+            memset(&kn, 0, sizeof kn);
+            kn.normal = vec(cos(ang), sin(ang));
+            c.mass = (Real)fabs(wild(&seed));
+            d.mass = (Real)fabs(wild(&seed));
+            if (!(c.mass > 0))
+                c.mass = 1;
+            if (!(d.mass > 0))
+                d.mass = 1;
+            c0.mass = c.mass;
+            d0.mass = d.mass;
+            r = F(cc_respond)(&c, &d, &kn, (Real)rng_unit(&seed));
+            TEST_ASSERT_TRUE(r == CC_MISS || r == CC_HIT || r == CC_ERR_INVALID);
+            if (r == CC_HIT)
+                TEST_ASSERT_TRUE_MESSAGE(isfinite(c.vel.x) && isfinite(c.vel.y) && isfinite(d.vel.x) && isfinite(d.vel.y),
+                                         "respond: velocities not finite");
+            else {
+                TEST_ASSERT_EQUAL_MEMORY(&c0, &c, sizeof c);
+                TEST_ASSERT_EQUAL_MEMORY(&d0, &d, sizeof d);
+            }
+        }
+    }
+    printf("extreme inputs (%s): %d cases (miss %d, hit %d, overlap %d): no NaN or Inf written\n", PREC_NAME, N_CASES,
+           counts[0], counts[1], counts[2]);
+}
+
 #ifndef TEST_FLOAT
 /* cc_sweep_many over 100 batches of 1000 pairs, with a finite t_max: bit-identical to cc_sweep
  * per pair (t for CC_HIT, 0 for CC_OVERLAP, +INFINITY for CC_MISS), the same codes, and the
@@ -493,6 +589,7 @@ int main(void)
     RUN_TEST(test_scale_invariance);
     RUN_TEST(test_respond_conservation);
     RUN_TEST(test_sweep_segment_properties);
+    RUN_TEST(test_extreme_inputs_never_produce_nan);
 #ifndef TEST_FLOAT
     RUN_TEST(test_sweep_many_matches_sweep);
 #endif

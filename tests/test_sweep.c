@@ -238,6 +238,31 @@ static void test_grazing_few_ulps_inside(void)
     TEST_ASSERT_EQUAL_INT(CC_MISS, F(cc_sweep)(&a, &b, 100, &k));
 }
 
+#ifdef TEST_FLOAT
+#define HUGE_RADIUS 0x1p100
+#define TINY_OFFSET 0x1p-40
+#else
+#define HUGE_RADIUS 0x1p950
+#define TINY_OFFSET 0x1p-110
+#endif
+
+/* Overlap of circles of radius S = 2^950 whose centres are T = 2^-110 apart along (0.6, 0.8)
+ * (float: 2^100 and 2^-40): the normal is still (0.6, 0.8), a unit vector, and the contact
+ * is cc_detect_static's, byte for byte. (A bug found by the extreme-input property: the solver
+ * scaled dp to R's size, 2^-1060, subnormal with a dozen bits left, and took the normal from
+ * that: |n| = 1 - 2e-6, which cc_respond then rejects.) */
+static void test_overlap_normal_tiny_offset_huge_radii(void)
+{
+    double S = HUGE_RADIUS, T = TINY_OFFSET;
+    Circle a = circle(0, 0, 1, 0, S, 1), b = circle(0.6 * T, 0.8 * T, -1, 0, S, 1);
+    Contact k = sentinel_contact(), d = sentinel_contact();
+    TEST_ASSERT_EQUAL_INT(CC_OVERLAP, F(cc_sweep)(&a, &b, 1, &k));
+    EXPECT_VEC_NEAR(4, 0.6, 0.8, k.normal);
+    EXPECT_NEAR(4, 2 * S, k.depth);
+    TEST_ASSERT_EQUAL_INT(CC_OVERLAP, F(cc_detect_static)(&a, &b, &d));
+    TEST_ASSERT_EQUAL_MEMORY(&d, &k, sizeof k);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -259,5 +284,6 @@ int main(void)
     RUN_TEST(test_differences_overflow);
     RUN_TEST(test_different_radii);
     RUN_TEST(test_grazing_few_ulps_inside);
+    RUN_TEST(test_overlap_normal_tiny_offset_huge_radii);
     return UNITY_END();
 }
