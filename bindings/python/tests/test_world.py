@@ -137,3 +137,14 @@ def test_callback_survives_garbage_collection():
     w.step(10.0)
     assert seen == [pytest.approx(4.0)]
     assert "World(" in repr(w)
+
+
+def test_changing_the_world_from_its_callback_is_refused_not_a_crash():
+    # the library refuses step/add/remove from inside the callback (CC_ERR_INVALID): the
+    # binding turns that into a ValueError raised by the outer step
+    holder = {}
+    w, _, _ = wall_scene(on_contact=lambda e: holder["w"].step(1.0))
+    holder["w"] = w
+    with pytest.raises(ValueError, match="CC_ERR_INVALID"):
+        w.step(10.0)
+    assert w.time == pytest.approx(10.0)
