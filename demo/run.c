@@ -44,10 +44,18 @@ static void summary(demo_show *show, const demo_options *o, double seconds)
         cc_world_get_stats(s->world, &st);
         fprintf(stderr,
                 "  %-8s: world time %.3f, %" PRIu64 " collisions, %" PRIu64
-                " events, deepest overlap %.3g\n"
-                "            energy drift %+.3e (relative, collisions only; restitution %g)\n",
+                " events, deepest overlap %.3g\n",
                 mode_name(s->def.mode), cc_world_time(s->world), st.collisions, st.events,
-                st.max_overlap, demo_stage_drift(s), s->def.restitution);
+                st.max_overlap);
+        /* energy the collisions made or lost, the demo's own pushes and brakes left out */
+        if (s->def.restitution == 1.0)
+            fprintf(stderr, "            energy drift %+.3e (relative; elastic: rounding only)\n",
+                    demo_stage_drift(s));
+        else
+            fprintf(stderr,
+                    "            energy lost in collisions: %.1f%% of the peak kinetic energy "
+                    "(restitution %g)\n",
+                    -100.0 * demo_stage_drift(s), s->def.restitution);
     }
     if (show->report != NULL)
         show->report(show, stderr);

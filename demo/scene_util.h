@@ -4,7 +4,7 @@
 
 #include <circlecollide.h>
 
-static cc_circle demo_circle(double x, double y, double vx, double vy, double r, double m)
+static inline cc_circle demo_circle(double x, double y, double vx, double vy, double r, double m)
 {
     cc_circle c;
     c.pos.x = x;
