@@ -34,7 +34,7 @@ int cc__step_exact(cc_world *w, double t_end)
             cc__predict_crossed(w, i, dir);
         } else if (e->kind == CC__EV_CIRCLE) {
             j = e->partner;
-            if (!(B[j].flags & CC__ALIVE) || B[j].count != e->pcount) {
+            if (!(CC__CARR(w, cc__cold, off_cold)[j].flags & CC__ALIVE) || B[j].count != e->pcount) {
                 w->stats.stale_events++;
                 cc__predict(w, i);
                 continue;

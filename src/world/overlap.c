@@ -9,12 +9,12 @@
 /* Circles whose position an overlap pass changed are filed again under their new cell. */
 static void cc__refile_moved(cc_world *w, int only)
 {
-    cc__body *B = CC__ARR(w, cc__body, off_body);
+    cc__cold *C = CC__ARR(w, cc__cold, off_cold);
     int i, lo = only >= 0 ? only : 0, hi = only >= 0 ? only + 1 : w->id_end;
     for (i = lo; i < hi; i++) {
-        if (!(B[i].flags & CC__MOVED))
+        if (!(C[i].flags & CC__MOVED))
             continue;
-        B[i].flags &= ~CC__MOVED;
+        C[i].flags &= ~CC__MOVED;
         if (w->mode == CC_MODE_EXACT) {
             cc__grid_remove(w, i);
             cc__grid_insert(w, i);
@@ -26,32 +26,32 @@ static void cc__refile_moved(cc_world *w, int only)
 static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
-    const cc__cell *cell = CC__CARR(w, cc__cell, off_cell);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     int j, s;
-    if (!w->use_grid || (B[i].flags & CC__LARGE)) {
+    if (!w->use_grid || (C[i].flags & CC__LARGE)) {
         for (j = only_higher ? i + 1 : 0; j < w->id_end; j++)
-            if (j != i && (B[j].flags & CC__ALIVE)) {
+            if (j != i && (C[j].flags & CC__ALIVE)) {
                 cc__advance_body(&B[j], w->now);
                 w->stats.pairs_tested++;
                 (void)cc__world_unoverlap(w, i, j, -1);
             }
     } else {
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-        int64_t cx = cell[i].cx, cy = cell[i].cy, x, y;
+        int32_t cx = B[i].cx, cy = B[i].cy, x, y;
         for (y = cy - 1; y <= cy + 1; y++)
             for (x = cx - 1; x <= cx + 1; x++)
-                for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = cell[j].next)
-                    if (cell[j].cx == x && cell[j].cy == y && j != i && (!only_higher || j > i)) {
+                for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
+                    if (B[j].cx == x && B[j].cy == y && j != i && (!only_higher || j > i)) {
                         cc__advance_body(&B[j], w->now);
                         w->stats.pairs_tested++;
                         (void)cc__world_unoverlap(w, i, j, -1);
                     }
         if (!only_higher)
-            for (j = w->large_head; j >= 0; j = cell[j].next)
+            for (j = w->large_head; j >= 0; j = B[j].next)
                 if (j != i)
                     (void)cc__world_unoverlap(w, i, j, -1);
     }
-    if (!isinf(B[i].m))
+    if (!isinf(C[i].m))
         for (s = 0; s < w->n_segments; s++) {
             w->stats.pairs_tested++;
             (void)cc__world_unoverlap(w, i, -1, s);
@@ -61,8 +61,8 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
 void cc__rebuild(cc_world *w)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
+    cc__cold *C = CC__ARR(w, cc__cold, off_cold);
     int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
-    const cc__cell *cell = CC__CARR(w, cc__cell, off_cell);
     int i, j;
     w->cs = cc__world_cell_size(w);
     w->inv_cs = 1.0 / w->cs;
@@ -71,42 +71,39 @@ void cc__rebuild(cc_world *w)
         cc__grid_clear(w);
     for (i = 0; i < w->id_end; i++) {
         hpos[i] = -1;
-        if (!(B[i].flags & CC__ALIVE))
+        if (!(C[i].flags & CC__ALIVE))
             continue;
         cc__advance_body(&B[i], w->now);
         cc__grid_insert(w, i);
     }
     for (i = 0; i < w->id_end; i++)
-        if (B[i].flags & CC__ALIVE) {
-            if (B[i].flags & CC__LARGE)
-                continue;
+        if ((C[i].flags & CC__ALIVE) && !(C[i].flags & CC__LARGE))
             cc__unoverlap_body(w, i, 1);
-        }
-    for (j = w->large_head; j >= 0; j = cell[j].next)
+    for (j = w->large_head; j >= 0; j = B[j].next)
         for (i = 0; i < w->id_end; i++)
-            if (i != j && (B[i].flags & CC__ALIVE))
+            if (i != j && (C[i].flags & CC__ALIVE))
                 (void)cc__world_unoverlap(w, i, j, -1);
     if (w->mode == CC_MODE_EXACT) {
         cc__refile_moved(w, -1);
         for (i = 0; i < w->id_end; i++)
-            if (B[i].flags & CC__ALIVE)
+            if (C[i].flags & CC__ALIVE)
                 cc__predict(w, i);
     } else {
         for (i = 0; i < w->id_end; i++)
-            B[i].flags &= ~CC__MOVED;
+            C[i].flags &= ~CC__MOVED;
     }
     w->dirty = 0;
 }
 
 void cc__settle_body(cc_world *w, int id)
 {
-    cc__body *B = CC__ARR(w, cc__body, off_body);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     int j;
     cc__grid_insert(w, id);
     cc__unoverlap_body(w, id, 0);
     /* the neighbours pushed away: refiled and predicted again */
     for (j = 0; j < w->id_end; j++)
-        if (j != id && (B[j].flags & CC__MOVED)) {
+        if (j != id && (C[j].flags & CC__MOVED)) {
             cc__refile_moved(w, j);
             cc__predict(w, j);
             cc__predict_neighbours(w, j);

@@ -20,14 +20,14 @@ typedef struct cc__cand {
 
 /* Contact of moving body i (at now) with circle j: a hit approaching faster than rounding, or
  * an overlap left by rounding whose bodies approach (a contact now). */
-static void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body *bi, int j, double now,
-                           cc__cand *best, uint64_t *tests)
+static void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body *bi, int i_fixed, int j,
+                           double now, cc__cand *best, uint64_t *tests)
 {
     const cc__body *bj = &B[j];
     double dt = now - bj->t, t, R, dv2, cr;
     cc_vec2 dp, dv, n;
     int r;
-    if (isinf(bi->m) && isinf(bj->m))
+    if (i_fixed && isinf(CC__CARR(w, cc__cold, off_cold)[j].m))
         return; /* two immovable circles pass through each other */
     dp.x = (bj->px + bj->vx * dt) - bi->px;
     dp.y = (bj->py + bj->vy * dt) - bi->py;
@@ -95,22 +95,24 @@ static void cc__try_segments(cc_world *w, const cc__body *bi, double t_cross, cc
 }
 
 /* When body b (at now, in cell c) leaves its cell, and through which side. */
-static double cc__cross_time(const cc_world *w, const cc__body *b, const cc__cell *c, int32_t *dir)
+static double cc__cross_time(const cc_world *w, const cc__body *b, int32_t *dir)
 {
     double tx = HUGE_VAL, ty = HUGE_VAL;
     int dx = -1, dy = -1;
-    if (b->vx > 0.0 && c->cx < CC__CELL_MAX) {
-        tx = ((double)(c->cx + 1) * w->cs - b->px) / b->vx;
+    if (b->vx > 0.0 && b->cx < CC__CELL_MAX) {
+        tx = ((double)b->cx + 1.0) * w->cs - b->px;
+        tx /= b->vx;
         dx = 0;
-    } else if (b->vx < 0.0 && c->cx > -CC__CELL_MAX) {
-        tx = ((double)c->cx * w->cs - b->px) / b->vx;
+    } else if (b->vx < 0.0 && b->cx > -CC__CELL_MAX) {
+        tx = ((double)b->cx * w->cs - b->px) / b->vx;
         dx = 1;
     }
-    if (b->vy > 0.0 && c->cy < CC__CELL_MAX) {
-        ty = ((double)(c->cy + 1) * w->cs - b->py) / b->vy;
+    if (b->vy > 0.0 && b->cy < CC__CELL_MAX) {
+        ty = ((double)b->cy + 1.0) * w->cs - b->py;
+        ty /= b->vy;
         dy = 2;
-    } else if (b->vy < 0.0 && c->cy > -CC__CELL_MAX) {
-        ty = ((double)c->cy * w->cs - b->py) / b->vy;
+    } else if (b->vy < 0.0 && b->cy > -CC__CELL_MAX) {
+        ty = ((double)b->cy * w->cs - b->py) / b->vy;
         dy = 3;
     }
     if (ty < tx) {
@@ -124,13 +126,13 @@ static double cc__cross_time(const cc_world *w, const cc__body *b, const cc__cel
 }
 
 /* Circles filed under cell (x, y), tested against body i. */
-static void cc__scan_cell(const cc_world *w, const cc__body *B, const cc__cell *cell, const int32_t *slot, int i,
-                          int64_t x, int64_t y, cc__cand *best, uint64_t *tests)
+static void cc__scan_cell(const cc_world *w, const cc__body *B, const int32_t *slot, int i, int i_fixed, int32_t x,
+                          int32_t y, cc__cand *best, uint64_t *tests)
 {
     int j;
-    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = cell[j].next)
-        if (cell[j].cx == x && cell[j].cy == y && j != i)
-            cc__try_circle(w, B, &B[i], j, w->now, best, tests);
+    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
+        if (B[j].cx == x && B[j].cy == y && j != i)
+            cc__try_circle(w, B, &B[i], i_fixed, j, w->now, best, tests);
 }
 
 /* Stores the prediction and queues the body by its earlier event. */
@@ -138,7 +140,7 @@ static void cc__finish(cc_world *w, int i, cc__cand *best, double t_cross, int32
 {
     cc__body *bi = &CC__ARR(w, cc__body, off_body)[i];
     cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
-    if (!isinf(bi->m) && w->n_segments > 0)
+    if (w->n_segments > 0 && !isinf(CC__CARR(w, cc__cold, off_cold)[i].m))
         cc__try_segments(w, bi, t_cross, best);
     ev->t = best->t;
     ev->kind = best->kind;
@@ -155,14 +157,14 @@ static void cc__finish(cc_world *w, int i, cc__cand *best, double t_cross, int32
 void cc__predict(cc_world *w, int i)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     cc__body *bi = &B[i];
-    const cc__cell *cell = CC__CARR(w, cc__cell, off_cell);
     double t_cross = HUGE_VAL;
     int32_t dir = -1;
     uint64_t tests = 0;
     cc__cand best;
-    int j;
-    if (!(bi->flags & CC__ALIVE) || (bi->vx == 0.0 && bi->vy == 0.0)) {
+    int j, fixed = isinf(C[i].m);
+    if (!(C[i].flags & CC__ALIVE) || (bi->vx == 0.0 && bi->vy == 0.0)) {
         cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
         ev->kind = CC__EV_NONE;
         ev->t = ev->t_cross = HUGE_VAL;
@@ -174,20 +176,20 @@ void cc__predict(cc_world *w, int i)
     best.kind = CC__EV_NONE;
     best.partner = -1;
     best.pcount = 0;
-    if (!w->use_grid || (bi->flags & CC__LARGE)) {
+    if (!w->use_grid || (C[i].flags & CC__LARGE)) {
         for (j = 0; j < w->id_end; j++)
-            if (j != i && (B[j].flags & CC__ALIVE))
-                cc__try_circle(w, B, bi, j, w->now, &best, &tests);
+            if (j != i && (C[j].flags & CC__ALIVE))
+                cc__try_circle(w, B, bi, fixed, j, w->now, &best, &tests);
     } else {
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-        int64_t cx = cell[i].cx, cy = cell[i].cy, x, y;
+        int32_t cx = bi->cx, cy = bi->cy, x, y;
         for (y = cy - 1; y <= cy + 1; y++)
             for (x = cx - 1; x <= cx + 1; x++)
-                cc__scan_cell(w, B, cell, slot, i, x, y, &best, &tests);
-        for (j = w->large_head; j >= 0; j = cell[j].next)
+                cc__scan_cell(w, B, slot, i, fixed, x, y, &best, &tests);
+        for (j = w->large_head; j >= 0; j = B[j].next)
             if (j != i)
-                cc__try_circle(w, B, bi, j, w->now, &best, &tests);
-        t_cross = cc__cross_time(w, bi, &cell[i], &dir);
+                cc__try_circle(w, B, bi, fixed, j, w->now, &best, &tests);
+        t_cross = cc__cross_time(w, bi, &dir);
     }
     w->stats.pairs_tested += tests;
     cc__finish(w, i, &best, t_cross, dir);
@@ -196,16 +198,16 @@ void cc__predict(cc_world *w, int i)
 void cc__predict_crossed(cc_world *w, int i, int dir)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
-    const cc__cell *cell = CC__CARR(w, cc__cell, off_cell);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     const cc__event *ev = &CC__CARR(w, cc__event, off_ev)[i];
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-    int64_t cx = cell[i].cx, cy = cell[i].cy, k;
+    int32_t cx = B[i].cx, cy = B[i].cy, k;
     uint64_t tests = 0;
     double t_cross;
     int32_t ndir;
+    int fixed = isinf(C[i].m);
     cc__cand best;
-    if (ev->kind == CC__EV_CIRCLE &&
-        (!(B[ev->partner].flags & CC__ALIVE) || B[ev->partner].count != ev->pcount)) {
+    if (ev->kind == CC__EV_CIRCLE && (!(C[ev->partner].flags & CC__ALIVE) || B[ev->partner].count != ev->pcount)) {
         cc__predict(w, i); /* the known hit is stale: the old cells need a new look too */
         return;
     }
@@ -215,16 +217,16 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
     best.pcount = ev->pcount;
     for (k = -1; k <= 1; k++) {
         if (dir == 0)
-            cc__scan_cell(w, B, cell, slot, i, cx + 1, cy + k, &best, &tests);
+            cc__scan_cell(w, B, slot, i, fixed, cx + 1, cy + k, &best, &tests);
         else if (dir == 1)
-            cc__scan_cell(w, B, cell, slot, i, cx - 1, cy + k, &best, &tests);
+            cc__scan_cell(w, B, slot, i, fixed, cx - 1, cy + k, &best, &tests);
         else if (dir == 2)
-            cc__scan_cell(w, B, cell, slot, i, cx + k, cy + 1, &best, &tests);
+            cc__scan_cell(w, B, slot, i, fixed, cx + k, cy + 1, &best, &tests);
         else
-            cc__scan_cell(w, B, cell, slot, i, cx + k, cy - 1, &best, &tests);
+            cc__scan_cell(w, B, slot, i, fixed, cx + k, cy - 1, &best, &tests);
     }
     w->stats.pairs_tested += tests;
-    t_cross = cc__cross_time(w, &B[i], &cell[i], &ndir);
+    t_cross = cc__cross_time(w, &B[i], &ndir);
     cc__finish(w, i, &best, t_cross, ndir);
 }
 
@@ -233,21 +235,21 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
 void cc__predict_neighbours(cc_world *w, int id)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
-    const cc__cell *cell = CC__CARR(w, cc__cell, off_cell);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     int j;
-    if (!w->use_grid || (B[id].flags & CC__LARGE)) {
+    if (!w->use_grid || (C[id].flags & CC__LARGE)) {
         for (j = 0; j < w->id_end; j++)
-            if (j != id && (B[j].flags & CC__ALIVE) && (B[j].vx != 0.0 || B[j].vy != 0.0))
+            if (j != id && (C[j].flags & CC__ALIVE) && (B[j].vx != 0.0 || B[j].vy != 0.0))
                 cc__predict(w, j);
     } else {
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-        int64_t cx = cell[id].cx, cy = cell[id].cy, x, y;
+        int32_t cx = B[id].cx, cy = B[id].cy, x, y;
         for (y = cy - 1; y <= cy + 1; y++)
             for (x = cx - 1; x <= cx + 1; x++)
-                for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = cell[j].next)
-                    if (cell[j].cx == x && cell[j].cy == y && j != id && (B[j].vx != 0.0 || B[j].vy != 0.0))
+                for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
+                    if (B[j].cx == x && B[j].cy == y && j != id && (B[j].vx != 0.0 || B[j].vy != 0.0))
                         cc__predict(w, j);
-        for (j = w->large_head; j >= 0; j = cell[j].next)
+        for (j = w->large_head; j >= 0; j = B[j].next)
             if (j != id && (B[j].vx != 0.0 || B[j].vy != 0.0))
                 cc__predict(w, j);
     }

@@ -8,15 +8,16 @@
 #include "helpers.inc"
 #include "precision_end.h"
 
-static cc_circle cc__as_circle(const cc__body *b)
+static cc_circle cc__as_circle(const cc_world *w, int id)
 {
+    const cc__body *b = &CC__CARR(w, cc__body, off_body)[id];
     cc_circle c;
     c.pos.x = b->px;
     c.pos.y = b->py;
     c.vel.x = b->vx;
     c.vel.y = b->vy;
     c.radius = b->r;
-    c.mass = b->m;
+    c.mass = CC__CARR(w, cc__cold, off_cold)[id].m;
     return c;
 }
 
@@ -69,12 +70,12 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
     cc__body *ba = &B[tc->a];
-    cc_circle ca = cc__as_circle(ba);
+    cc_circle ca = cc__as_circle(w, tc->a);
     cc_contact k;
     double approach;
     if (tc->b >= 0) {
         cc__body *bb = &B[tc->b];
-        cc_circle cb = cc__as_circle(bb);
+        cc_circle cb = cc__as_circle(w, tc->b);
         cc_vec2 d = cc__sub(cb.pos, ca.pos);
         double dist = cc__length(d);
         k.t = 0.0;
@@ -123,15 +124,16 @@ int cc__world_resolve(cc_world *w, const cc__touch *touch, int n)
 int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
+    cc__cold *C = CC__ARR(w, cc__cold, off_cold);
     cc__body *ba = &B[a];
-    cc_circle ca = cc__as_circle(ba);
+    cc_circle ca = cc__as_circle(w, a);
     cc__touch tc;
     tc.a = a;
     tc.b = b;
     tc.segment = seg;
     if (b >= 0) {
         cc__body *bb = &B[b];
-        cc_circle cb = cc__as_circle(bb);
+        cc_circle cb = cc__as_circle(w, b);
         cc_contact k;
         if (isinf(ca.mass) && isinf(cb.mass))
             return 0;
@@ -144,13 +146,13 @@ int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
             ba->px = ca.pos.x;
             ba->py = ca.pos.y;
             ba->count++;
-            ba->flags |= CC__MOVED;
+            C[a].flags |= CC__MOVED;
         }
         if (cb.pos.x != bb->px || cb.pos.y != bb->py) {
             bb->px = cb.pos.x;
             bb->py = cb.pos.y;
             bb->count++;
-            bb->flags |= CC__MOVED;
+            C[b].flags |= CC__MOVED;
         }
     } else {
         cc_contact k;
@@ -163,7 +165,7 @@ int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
         ba->px -= k.normal.x * k.depth;
         ba->py -= k.normal.y * k.depth;
         ba->count++;
-        ba->flags |= CC__MOVED;
+        C[a].flags |= CC__MOVED;
     }
     (void)cc__world_resolve(w, &tc, 1);
     return 1;

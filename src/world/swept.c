@@ -32,11 +32,12 @@ static void cc__offer(cc_world *w, int i, double t, int kind, int partner)
 static void cc__pair(cc_world *w, int i, int j, double dt)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     const cc__body *bi = &B[i], *bj = &B[j];
     cc_vec2 dp, dv, n;
     double t;
     int r;
-    if ((bi->vx == 0.0 && bi->vy == 0.0 && bj->vx == 0.0 && bj->vy == 0.0) || (isinf(bi->m) && isinf(bj->m)))
+    if ((bi->vx == 0.0 && bi->vy == 0.0 && bj->vx == 0.0 && bj->vy == 0.0) || (isinf(C[i].m) && isinf(C[j].m)))
         return;
     dp = cc__v(bj->px - bi->px, bj->py - bi->py);
     dv = cc__v(bj->vx - bi->vx, bj->vy - bi->vy);
@@ -62,12 +63,13 @@ static void cc__walls(cc_world *w, int i, double dt)
     cc_circle c;
     cc_contact k;
     int s;
-    if (isinf(b->m) || (b->vx == 0.0 && b->vy == 0.0))
+    double m = CC__CARR(w, cc__cold, off_cold)[i].m;
+    if (isinf(m) || (b->vx == 0.0 && b->vy == 0.0))
         return;
     c.pos = cc__v(b->px, b->py);
     c.vel = cc__v(b->vx, b->vy);
     c.radius = b->r;
-    c.mass = b->m;
+    c.mass = m;
     for (s = 0; s < w->n_segments; s++) {
         const cc_segment *g = &seg[s];
         /* the path's box grown by the radius against the wall's box */
@@ -86,7 +88,7 @@ static void cc__walls(cc_world *w, int i, double dt)
 static void cc__find_impacts(cc_world *w, double dt)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
-    cc__cell *cell = CC__ARR(w, cc__cell, off_cell);
+    cc__cold *C = CC__ARR(w, cc__cold, off_cold);
     cc__event *ev = CC__ARR(w, cc__event, off_ev);
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
     double half = 0.5 * w->cs, dslow = 0.0, rmax = 0.0;
@@ -95,15 +97,15 @@ static void cc__find_impacts(cc_world *w, double dt)
         double d;
         ev[i].kind = CC__EV_NONE;
         ev[i].t = ev[i].t_cross = HUGE_VAL;
-        if (!(B[i].flags & CC__ALIVE))
+        if (!(C[i].flags & CC__ALIVE))
             continue;
         d = (fabs(B[i].vx) + fabs(B[i].vy)) * dt;
-        if (!(B[i].flags & CC__LARGE) && B[i].r > rmax)
+        if (!(C[i].flags & CC__LARGE) && B[i].r > rmax)
             rmax = B[i].r;
-        if (w->use_grid && !(B[i].flags & CC__LARGE) && d > half) {
+        if (w->use_grid && !(C[i].flags & CC__LARGE) && d > half) {
             cc__grid_remove(w, i);
-            B[i].flags |= CC__FAST;
-            cell[i].next = fast_head;
+            C[i].flags |= CC__FAST;
+            B[i].next = fast_head;
             fast_head = i;
         } else if (d > dslow) {
             dslow = d;
@@ -112,52 +114,52 @@ static void cc__find_impacts(cc_world *w, double dt)
     if (!w->use_grid) {
         for (i = 0; i < w->id_end; i++)
             for (j = i + 1; j < w->id_end; j++)
-                if ((B[i].flags & CC__ALIVE) && (B[j].flags & CC__ALIVE))
+                if ((C[i].flags & CC__ALIVE) && (C[j].flags & CC__ALIVE))
                     cc__pair(w, i, j, dt);
     } else {
         /* two slow bodies that meet are within 2 rmax + 2 dslow of each other */
         k = (int)ceil((2.0 * rmax + 2.0 * dslow) * w->inv_cs);
         for (i = 0; i < w->id_end; i++) {
-            int64_t x, y;
-            if (!(B[i].flags & CC__ALIVE) || (B[i].flags & (CC__LARGE | CC__FAST)))
+            int32_t x, y;
+            if (!(C[i].flags & CC__ALIVE) || (C[i].flags & (CC__LARGE | CC__FAST)))
                 continue;
-            for (y = cell[i].cy - k; y <= cell[i].cy + k; y++)
-                for (x = cell[i].cx - k; x <= cell[i].cx + k; x++)
-                    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = cell[j].next)
-                        if (j > i && cell[j].cx == x && cell[j].cy == y)
+            for (y = B[i].cy - k; y <= B[i].cy + k; y++)
+                for (x = B[i].cx - k; x <= B[i].cx + k; x++)
+                    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
+                        if (j > i && B[j].cx == x && B[j].cy == y)
                             cc__pair(w, i, j, dt);
-            for (j = w->large_head; j >= 0; j = cell[j].next)
+            for (j = w->large_head; j >= 0; j = B[j].next)
                 cc__pair(w, i, j, dt);
         }
-        for (i = fast_head; i >= 0; i = cell[i].next) {
+        for (i = fast_head; i >= 0; i = B[i].next) {
             const cc__body *b = &B[i];
             double reach = b->r + rmax + dslow;
-            int64_t x0 = cc__grid_coord(w, (b->vx < 0 ? b->px + b->vx * dt : b->px) - reach);
-            int64_t x1 = cc__grid_coord(w, (b->vx > 0 ? b->px + b->vx * dt : b->px) + reach);
-            int64_t y0 = cc__grid_coord(w, (b->vy < 0 ? b->py + b->vy * dt : b->py) - reach);
-            int64_t y1 = cc__grid_coord(w, (b->vy > 0 ? b->py + b->vy * dt : b->py) + reach), x, y;
-            for (j = cell[i].next; j >= 0; j = cell[j].next)
+            int32_t x0 = cc__grid_coord(w, (b->vx < 0 ? b->px + b->vx * dt : b->px) - reach);
+            int32_t x1 = cc__grid_coord(w, (b->vx > 0 ? b->px + b->vx * dt : b->px) + reach);
+            int32_t y0 = cc__grid_coord(w, (b->vy < 0 ? b->py + b->vy * dt : b->py) - reach);
+            int32_t y1 = cc__grid_coord(w, (b->vy > 0 ? b->py + b->vy * dt : b->py) + reach), x, y;
+            for (j = B[i].next; j >= 0; j = B[j].next)
                 cc__pair(w, i, j, dt); /* fast against fast */
-            for (j = w->large_head; j >= 0; j = cell[j].next)
+            for (j = w->large_head; j >= 0; j = B[j].next)
                 cc__pair(w, i, j, dt);
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > (double)w->id_end) {
                 for (j = 0; j < w->id_end; j++) /* a path over more cells than there are bodies */
-                    if ((B[j].flags & CC__ALIVE) && !(B[j].flags & (CC__LARGE | CC__FAST)))
+                    if ((C[j].flags & CC__ALIVE) && !(C[j].flags & (CC__LARGE | CC__FAST)))
                         cc__pair(w, i, j, dt);
                 continue;
             }
             for (y = y0; y <= y1; y++)
                 for (x = x0; x <= x1; x++)
-                    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = cell[j].next)
-                        if (cell[j].cx == x && cell[j].cy == y)
+                    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
+                        if (B[j].cx == x && B[j].cy == y)
                             cc__pair(w, i, j, dt);
         }
     }
     for (i = 0; i < w->id_end; i++)
-        if (B[i].flags & CC__ALIVE)
+        if (C[i].flags & CC__ALIVE)
             cc__walls(w, i, dt);
     for (i = 0; i < w->id_end; i++) {
-        B[i].flags &= ~CC__FAST;
+        C[i].flags &= ~CC__FAST;
         if (ev[i].kind != CC__EV_NONE)
             cc__heap_update(w, i, ev[i].t);
     }

@@ -72,7 +72,7 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     int k;
     sizes[0] = n * sizeof(cc__body);
     sizes[1] = n * sizeof(cc__event);
-    sizes[2] = n * sizeof(cc__cell);
+    sizes[2] = n * sizeof(cc__cold);
     sizes[3] = n * sizeof(cc__heap_entry); /* heap */
     sizes[4] = n * sizeof(int32_t); /* heap positions */
     sizes[5] = n * sizeof(int32_t); /* free ids */
@@ -85,7 +85,7 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     if (w != NULL) {
         w->off_body = offs[0];
         w->off_ev = offs[1];
-        w->off_cell = offs[2];
+        w->off_cold = offs[2];
         w->off_heap = offs[3];
         w->off_hpos = offs[4];
         w->off_free = offs[5];
@@ -148,7 +148,7 @@ static int cc__world_ok(const cc_world *w) { return w != NULL && w->magic == CC_
 
 static int cc__live(const cc_world *w, int id)
 {
-    return id >= 0 && id < w->id_end && (CC__CARR(w, cc__body, off_body)[id].flags & CC__ALIVE);
+    return id >= 0 && id < w->id_end && (CC__CARR(w, cc__cold, off_cold)[id].flags & CC__ALIVE);
 }
 
 /* Cell size for the current circles: at least the largest movable diameter (so that touching
@@ -157,12 +157,13 @@ static int cc__live(const cc_world *w, int id)
 double cc__world_cell_size(const cc_world *w)
 {
     const cc__body *b = CC__CARR(w, cc__body, off_body);
+    const cc__cold *k = CC__CARR(w, cc__cold, off_cold);
     double dmax = 0.0, any = 0.0, cs;
     int i;
     for (i = 0; i < w->id_end; i++) {
-        if (!(b[i].flags & CC__ALIVE))
+        if (!(k[i].flags & CC__ALIVE))
             continue;
-        if (!isinf(b[i].m) && 2.0 * b[i].r > dmax)
+        if (!isinf(k[i].m) && 2.0 * b[i].r > dmax)
             dmax = 2.0 * b[i].r;
         if (2.0 * b[i].r > any)
             any = 2.0 * b[i].r;
@@ -177,16 +178,16 @@ double cc__world_cell_size(const cc_world *w)
 static void cc__put(cc_world *w, int id, const cc_circle *c)
 {
     cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
-    uint32_t count = b->count + 1u;
+    cc__cold *k = &CC__ARR(w, cc__cold, off_cold)[id];
     b->px = c->pos.x;
     b->py = c->pos.y;
     b->vx = c->vel.x;
     b->vy = c->vel.y;
     b->t = w->now;
     b->r = c->radius;
-    b->m = c->mass;
-    b->count = count;
-    b->flags = CC__ALIVE;
+    b->count++;
+    k->m = c->mass;
+    k->flags = CC__ALIVE;
     if (w->mode != CC_MODE_EXACT)
         return; /* the other modes rebuild their grid every step */
     /* wider than the cells allow: the cell size grows, everything is refiled at the next step */
@@ -203,10 +204,12 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
         return CC_ERR_INVALID;
     if (w->n_circles >= w->max_circles)
         return CC_ERR_FULL;
-    if (w->free_top > 0)
+    if (w->free_top > 0) {
         id = CC__ARR(w, int32_t, off_free)[--w->free_top];
-    else
+    } else {
         id = w->id_end++;
+        CC__ARR(w, cc__body, off_body)[id].count = 0; /* first use of this slot of memory */
+    }
     w->n_circles++;
     cc__put(w, id, c);
     return id;
@@ -215,14 +218,12 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
 /* Takes body id out of the grid and the queue; its count bump makes others' events stale. */
 static void cc__unfile(cc_world *w, int id)
 {
-    cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
     if (w->mode == CC_MODE_EXACT && !w->dirty) {
         cc__heap_remove(w, id);
-        if (w->use_grid || (b->flags & CC__LARGE))
-            cc__grid_remove(w, id);
+        cc__grid_remove(w, id);
     }
-    b->count++;
-    b->flags &= ~CC__LARGE;
+    CC__ARR(w, cc__body, off_body)[id].count++;
+    CC__ARR(w, cc__cold, off_cold)[id].flags &= ~CC__LARGE;
 }
 
 CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c)
@@ -243,7 +244,7 @@ CC_API int cc_world_remove_circle(cc_world *w, int id)
     if (!cc__live(w, id))
         return CC_ERR_NOT_FOUND;
     cc__unfile(w, id);
-    CC__ARR(w, cc__body, off_body)[id].flags = 0;
+    CC__ARR(w, cc__cold, off_cold)[id].flags = 0;
     CC__ARR(w, int32_t, off_free)[w->free_top++] = id;
     w->n_circles--;
     return CC_OK;
@@ -268,7 +269,7 @@ static void cc__get(const cc_world *w, int id, cc_circle *out)
     out->vel.x = b->vx;
     out->vel.y = b->vy;
     out->radius = b->r;
-    out->mass = b->m;
+    out->mass = CC__CARR(w, cc__cold, off_cold)[id].m;
 }
 
 CC_API int cc_world_get_circle(const cc_world *w, int id, cc_circle *out)

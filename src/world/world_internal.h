@@ -12,15 +12,23 @@
 #include <stdint.h>
 
 /* A circle's state, kept lazily: it is at (px, py) at its own time t and moves at (vx, vy) from
- * there, so that an event touches only the bodies it involves. 64 bytes: one cache line. */
+ * there, so that an event touches only the bodies it involves. With its grid cell and list link
+ * beside it, this is everything a neighbour search reads: one 64-byte cache line per circle. */
 typedef struct cc__body {
     double px, py, vx, vy;
-    double t;      /* the time at which (px, py) holds */
-    double r;      /* radius */
-    double m;      /* mass, +INFINITY for an immovable circle */
+    double t;       /* the time at which (px, py) holds */
+    double r;       /* radius */
+    int32_t cx, cy; /* grid cell */
+    int32_t next;   /* next circle filed under the same hash slot (or on the large list) */
     uint32_t count; /* bumped whenever the trajectory changes: invalidates others' events */
-    int32_t flags;  /* CC__ALIVE, CC__LARGE */
 } cc__body;
+
+/* What the neighbour search does not need. */
+typedef struct cc__cold {
+    double m;       /* mass, +INFINITY for an immovable circle */
+    int32_t flags;  /* CC__ALIVE, CC__LARGE, ... */
+    int32_t prev;   /* previous circle in its list, -1 for the first */
+} cc__cold;
 
 #define CC__ALIVE 1
 #define CC__LARGE 2  /* wider than a grid cell (immovable only): kept on the large list */
@@ -51,12 +59,6 @@ typedef struct cc__heap_entry {
     int32_t id;
     int32_t pad_;
 } cc__heap_entry;
-
-/* A body's grid cell and its links in the list of that cell's hash slot (or the large list). */
-typedef struct cc__cell {
-    int64_t cx, cy;
-    int32_t next, prev;
-} cc__cell;
 
 /* Contact handed to the resolver: circle a against circle b (b >= 0) or wall segment. */
 typedef struct cc__touch {
@@ -89,7 +91,7 @@ struct cc_world {
     cc_world_stats stats;
 
     /* byte offsets from the header to the arrays */
-    size_t off_body, off_ev, off_cell, off_heap, off_hpos, off_free, off_slot, off_seg;
+    size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_free, off_slot, off_seg;
 };
 
 #define CC__WORLD_MAGIC 0x63637731u /* "ccw1" */
@@ -97,7 +99,7 @@ struct cc_world {
 #define CC__CARR(w, type, off) ((const type *)(const void *)((const unsigned char *)(w) + (w)->off))
 
 /* Largest |cell coordinate|: cell bounds stay exact doubles, and no cell index overflows. */
-#define CC__CELL_MAX ((int64_t)1 << 40)
+#define CC__CELL_MAX ((int32_t)1 << 30)
 
 /* ---- world.c ---- */
 /* position of body b at time t (its lazy state carried forward) */
@@ -125,15 +127,16 @@ void cc__grid_clear(cc_world *w);
 void cc__grid_insert(cc_world *w, int id); /* files the body by its position at w->now */
 void cc__grid_remove(cc_world *w, int id);
 void cc__grid_move(cc_world *w, int id, int dir); /* a cell crossing */
-int64_t cc__grid_coord(const cc_world *w, double x);
+int32_t cc__grid_coord(const cc_world *w, double x);
 /* Blocks of 16 x 16 cells map to consecutive runs of slots (row by row), so that the 3x3 cells
  * around a circle mostly share cache lines; each block starts at a hashed offset, so that
  * scenes of any shape spread over the whole table. */
-static inline uint32_t cc__grid_slot(const cc_world *w, int64_t cx, int64_t cy)
+static inline uint32_t cc__grid_slot(const cc_world *w, int32_t cx, int32_t cy)
 {
-    uint64_t h = (uint64_t)(cx >> 4) * UINT64_C(0x9E3779B97F4A7C15) ^ (uint64_t)(cy >> 4) * UINT64_C(0xC2B2AE3D27D4EB4F);
+    uint32_t ux = (uint32_t)cx, uy = (uint32_t)cy;
+    uint64_t h = (uint64_t)(ux >> 4) * UINT64_C(0x9E3779B97F4A7C15) ^ (uint64_t)(uy >> 4) * UINT64_C(0xC2B2AE3D27D4EB4F);
     h ^= h >> 29;
-    return ((uint32_t)h + (uint32_t)((cx & 15) | (cy & 15) << 4)) & w->slot_mask;
+    return ((uint32_t)h + ((ux & 15u) | (uy & 15u) << 4)) & w->slot_mask;
 }
 
 /* ---- predict.c: a body's earliest event (EXACT) ---- */
