@@ -35,7 +35,7 @@ static void add_message(const char *msg)
     }
 }
 
-static void fail_and_bail(void)
+CC_UNITY_NORETURN static void fail_and_bail(void)
 {
     unity.failed = 1;
     fflush(stdout);

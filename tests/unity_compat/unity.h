@@ -37,8 +37,15 @@ void UnityBegin(const char *filename);
 int UnityEnd(void);
 void UnityDefaultTestRun(UnityTestFunction func, const char *name, int line);
 
-void UnityFail(const char *msg, int line);
-void UnityIgnore(const char *msg, int line);
+/* Like Unity, failing and ignoring never return (they jump out of the test): the compiler may
+ * rely on a TEST_ASSERT's condition holding after it, as it does with the real Unity. */
+#if defined(__GNUC__) || defined(__clang__)
+#define CC_UNITY_NORETURN __attribute__((__noreturn__))
+#else
+#define CC_UNITY_NORETURN
+#endif
+CC_UNITY_NORETURN void UnityFail(const char *msg, int line);
+CC_UNITY_NORETURN void UnityIgnore(const char *msg, int line);
 void UnityMessage(const char *msg, int line);
 void UnityAssertEqualIntNumber(long long expected, long long actual, const char *msg, int line,
                                int is_unsigned);
