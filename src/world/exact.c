@@ -5,6 +5,20 @@
  * advanced (lazily) and predicted again. */
 #include "world_internal.h"
 
+/* Resolves the impact due now, then predicts again every body whose trajectory changed, and
+ * body tc->a in any case (its event is spent). */
+static void cc__impact(cc_world *w, const cc__touch *tc)
+{
+    int k, a_done = 0;
+    (void)cc__world_resolve(w, tc, 1);
+    while ((k = cc__world_take_touched(w)) >= 0) {
+        a_done |= k == tc->a;
+        cc__predict(w, k);
+    }
+    if (!a_done)
+        cc__predict(w, tc->a);
+}
+
 int cc__step_exact(cc_world *w, double t_end)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
@@ -43,15 +57,12 @@ int cc__step_exact(cc_world *w, double t_end)
             tc.a = i;
             tc.b = j;
             tc.segment = -1;
-            (void)cc__world_resolve(w, &tc, 1);
-            cc__predict(w, i);
-            cc__predict(w, j);
+            cc__impact(w, &tc);
         } else {
             tc.a = i;
             tc.b = -1;
             tc.segment = e->partner;
-            (void)cc__world_resolve(w, &tc, 1);
-            cc__predict(w, i);
+            cc__impact(w, &tc);
         }
     }
     w->now = t_end;

@@ -83,6 +83,8 @@ void cc__rebuild(cc_world *w)
         for (i = 0; i < w->id_end; i++)
             if (i != j && (C[i].flags & CC__ALIVE))
                 (void)cc__world_unoverlap(w, i, j, -1);
+    while (cc__world_take_touched(w) >= 0)
+        ; /* everything is predicted below */
     if (w->mode == CC_MODE_EXACT) {
         cc__refile_moved(w, -1);
         for (i = 0; i < w->id_end; i++)
@@ -97,13 +99,13 @@ void cc__rebuild(cc_world *w)
 
 void cc__settle_body(cc_world *w, int id)
 {
-    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     int j;
     cc__grid_insert(w, id);
     cc__unoverlap_body(w, id, 0);
-    /* the neighbours pushed away: refiled and predicted again */
-    for (j = 0; j < w->id_end; j++)
-        if (j != id && (C[j].flags & CC__MOVED)) {
+    /* the neighbours pushed away or struck: refiled and predicted again, with whatever moves
+     * near them (one of them may now rest in someone's path) */
+    while ((j = cc__world_take_touched(w)) >= 0)
+        if (j != id) {
             cc__refile_moved(w, j);
             cc__predict(w, j);
             cc__predict_neighbours(w, j);

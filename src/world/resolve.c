@@ -92,12 +92,12 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc)
         if (ca.vel.x != ba->vx || ca.vel.y != ba->vy) {
             ba->vx = ca.vel.x;
             ba->vy = ca.vel.y;
-            ba->count++;
+            cc__world_mark(w, tc->a);
         }
         if (cb.vel.x != bb->vx || cb.vel.y != bb->vy) {
             bb->vx = cb.vel.x;
             bb->vy = cb.vel.y;
-            bb->count++;
+            cc__world_mark(w, tc->b);
         }
         return 1;
     }
@@ -109,10 +109,31 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc)
     cc__report(w, tc->a, -1, tc->segment, &k, ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy))));
     ba->vx = ca.vel.x;
     ba->vy = ca.vel.y;
-    ba->count++;
+    cc__world_mark(w, tc->a);
     return 1;
 }
 
+void cc__world_mark(cc_world *w, int id)
+{
+    cc__cold *k = &CC__ARR(w, cc__cold, off_cold)[id];
+    CC__ARR(w, cc__body, off_body)[id].count++;
+    if (k->flags & CC__TOUCHED)
+        return;
+    k->flags |= CC__TOUCHED;
+    CC__ARR(w, int32_t, off_touched)[w->n_touched++] = id;
+}
+
+int cc__world_take_touched(cc_world *w)
+{
+    int id;
+    if (w->n_touched == 0)
+        return -1;
+    id = CC__ARR(w, int32_t, off_touched)[--w->n_touched];
+    CC__ARR(w, cc__cold, off_cold)[id].flags &= ~CC__TOUCHED;
+    return id;
+}
+
+/* Pairwise, in the order given: the place where issue 5's simultaneous-impact model goes. */
 int cc__world_resolve(cc_world *w, const cc__touch *touch, int n)
 {
     int i, hits = 0;
@@ -145,14 +166,14 @@ int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
         if (ca.pos.x != ba->px || ca.pos.y != ba->py) {
             ba->px = ca.pos.x;
             ba->py = ca.pos.y;
-            ba->count++;
             C[a].flags |= CC__MOVED;
+            cc__world_mark(w, a);
         }
         if (cb.pos.x != bb->px || cb.pos.y != bb->py) {
             bb->px = cb.pos.x;
             bb->py = cb.pos.y;
-            bb->count++;
             C[b].flags |= CC__MOVED;
+            cc__world_mark(w, b);
         }
     } else {
         cc_contact k;
@@ -164,8 +185,8 @@ int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
         cc__overlap_seen(w, k.depth);
         ba->px -= k.normal.x * k.depth;
         ba->py -= k.normal.y * k.depth;
-        ba->count++;
         C[a].flags |= CC__MOVED;
+        cc__world_mark(w, a);
     }
     (void)cc__world_resolve(w, &tc, 1);
     return 1;

@@ -16,7 +16,7 @@
 #include "solver.inc"
 #include "precision_end.h"
 
-#define CC__FAST 8
+#define CC__FAST 16
 
 /* Offers an impact at relative time t to body i (kept when earlier than what it holds). */
 static void cc__offer(cc_world *w, int i, double t, int kind, int partner)
@@ -190,6 +190,8 @@ int cc__step_swept(cc_world *w, double dt)
             tc.segment = e.partner;
         }
         (void)cc__world_resolve(w, &tc, 1);
+        while (cc__world_take_touched(w) >= 0)
+            ; /* no prediction again within the step: that is the mode */
     }
     w->now = t_end;
     return CC_OK;

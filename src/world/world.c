@@ -68,7 +68,7 @@ static uint32_t cc__slots(int max_circles)
 static size_t cc__layout(const cc_world_def *d, cc_world *w)
 {
     size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
-    size_t offs[8], sizes[8];
+    size_t offs[9], sizes[9];
     int k;
     sizes[0] = n * sizeof(cc__body);
     sizes[1] = n * sizeof(cc__event);
@@ -76,9 +76,10 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[3] = n * sizeof(cc__heap_entry); /* heap */
     sizes[4] = n * sizeof(int32_t); /* heap positions */
     sizes[5] = n * sizeof(int32_t); /* free ids */
-    sizes[6] = (size_t)cc__slots(d->max_circles) * sizeof(int32_t);
-    sizes[7] = (size_t)d->max_segments * sizeof(cc_segment);
-    for (k = 0; k < 8; k++) {
+    sizes[6] = n * sizeof(int32_t); /* touched list */
+    sizes[7] = (size_t)cc__slots(d->max_circles) * sizeof(int32_t);
+    sizes[8] = (size_t)d->max_segments * sizeof(cc_segment);
+    for (k = 0; k < 9; k++) {
         offs[k] = off;
         off += cc__align16(sizes[k]);
     }
@@ -89,8 +90,9 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_heap = offs[3];
         w->off_hpos = offs[4];
         w->off_free = offs[5];
-        w->off_slot = offs[6];
-        w->off_seg = offs[7];
+        w->off_touched = offs[6];
+        w->off_slot = offs[7];
+        w->off_seg = offs[8];
     }
     return off;
 }

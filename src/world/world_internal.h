@@ -32,7 +32,8 @@ typedef struct cc__cold {
 
 #define CC__ALIVE 1
 #define CC__LARGE 2  /* wider than a grid cell (immovable only): kept on the large list */
-#define CC__MOVED 4  /* scratch: moved by an overlap pass, to be re-filed in the grid */
+#define CC__MOVED 4   /* moved by an overlap pass: to be re-filed in the grid */
+#define CC__TOUCHED 8 /* on the touched list (cc__world_mark) */
 
 /* What a body's predicted hit is. */
 #define CC__EV_NONE 0
@@ -86,12 +87,13 @@ struct cc_world {
     int id_end;       /* ids in [0, id_end) have been used at least once */
     int free_top;     /* removed ids waiting for reuse (a stack) */
     int heap_n;
+    int n_touched;    /* bodies on the touched list */
     int large_head;   /* list of CC__LARGE circles */
     uint32_t slot_mask;
     cc_world_stats stats;
 
     /* byte offsets from the header to the arrays */
-    size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_free, off_slot, off_seg;
+    size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_free, off_touched, off_slot, off_seg;
 };
 
 #define CC__WORLD_MAGIC 0x63637731u /* "ccw1" */
@@ -157,9 +159,16 @@ static inline int cc__approaching(const cc_world *w, double vn, double speeds)
 /* ---- resolve.c: every impulse goes through here ---- */
 /* Resolves the contacts of touch[0..n) that happen at world time w->now; every body named is at
  * w->now already. Applies the impulses (restitution, rest_speed), reports each to the
- * callback, counts collisions and records the overlap at contact. Does not re-predict: the
- * caller bumps the counts and re-predicts the bodies named. Returns the impulses applied. */
+ * callback, counts collisions and records the overlap at contact. Every body whose velocity
+ * changes is marked (cc__world_mark), and the caller predicts the marked bodies again: a
+ * resolver that changes more bodies than it was given (issue 5's clusters) needs nothing else.
+ * Returns the impulses applied. */
 int cc__world_resolve(cc_world *w, const cc__touch *touch, int n);
+/* Body id's trajectory changed at w->now: bumps its count (others' events with it go stale) and
+ * puts it on the touched list once. */
+void cc__world_mark(cc_world *w, int id);
+/* Takes a body off the touched list (-1 when empty). */
+int cc__world_take_touched(cc_world *w);
 /* Pushes apart body a and circle b (b >= 0) or segment seg when they overlap, then resolves the
  * contact if they approach. Both are at w->now. Returns 1 when anything moved. */
 int cc__world_unoverlap(cc_world *w, int a, int b, int seg);
