@@ -88,7 +88,8 @@ build_and_test() {
   step "configure $dir" configure "$dir" "$@" || return 1
   step "build $dir" cmake --build "$dir" -j "$jobs" || return 1
   # shellcheck disable=SC2086
-  step "ctest $dir" ctest --test-dir "$dir" --output-on-failure -j "$jobs" $ctest_extra
+  # --timeout: a default for tests without their own TIMEOUT, so that a hang cannot stall CI
+  step "ctest $dir" ctest --test-dir "$dir" --output-on-failure --timeout 300 -j "$jobs" $ctest_extra
 }
 
 step "apt packages" apt_packages
