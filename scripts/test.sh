@@ -87,8 +87,8 @@ build_and_test() {
   shift 2
   step "configure $dir" configure "$dir" "$@" || return 1
   step "build $dir" cmake --build "$dir" -j "$jobs" || return 1
-  # shellcheck disable=SC2086
   # --timeout: a default for tests without their own TIMEOUT, so that a hang cannot stall CI
+  # shellcheck disable=SC2086
   step "ctest $dir" ctest --test-dir "$dir" --output-on-failure --timeout 300 -j "$jobs" $ctest_extra
 }
 
