@@ -125,14 +125,33 @@ static double cc__cross_time(const cc_world *w, const cc__body *b, int32_t *dir)
     return w->now + (tx > 0.0 ? tx : 0.0);
 }
 
-/* Circles filed under cell (x, y), tested against body i. */
+/* Circles filed under cell (x, y), tested against body i; s is the cell's hash slot. */
+static inline void cc__scan_slot(const cc_world *w, const cc__body *B, const int32_t *slot, uint32_t s, int i,
+                                 int i_fixed, int32_t x, int32_t y, cc__cand *best, uint64_t *tests)
+{
+    int j;
+    for (j = slot[s]; j >= 0; j = B[j].next)
+        if (B[j].cx == x && B[j].cy == y && j != i)
+            cc__try_circle(w, B, &B[i], i_fixed, j, w->now, best, tests);
+}
+
 static void cc__scan_cell(const cc_world *w, const cc__body *B, const int32_t *slot, int i, int i_fixed, int32_t x,
                           int32_t y, cc__cand *best, uint64_t *tests)
 {
-    int j;
-    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
-        if (B[j].cx == x && B[j].cy == y && j != i)
-            cc__try_circle(w, B, &B[i], i_fixed, j, w->now, best, tests);
+    cc__scan_slot(w, B, slot, cc__grid_slot(w, x, y), i, i_fixed, x, y, best, tests);
+}
+
+/* The three cells (x0 .. x0 + 2, y): within a 16-cell block their slots are consecutive. */
+static void cc__scan_row(const cc_world *w, const cc__body *B, const int32_t *slot, int i, int i_fixed, int32_t x0,
+                         int32_t y, cc__cand *best, uint64_t *tests)
+{
+    uint32_t s = cc__grid_slot(w, x0, y);
+    int32_t x;
+    for (x = x0; x < x0 + 3; x++) {
+        if (x != x0)
+            s = ((uint32_t)x & 15u) ? (s + 1u) & w->slot_mask : cc__grid_slot(w, x, y);
+        cc__scan_slot(w, B, slot, s, i, i_fixed, x, y, best, tests);
+    }
 }
 
 /* Stores the prediction and queues the body by its earlier event. */
@@ -182,10 +201,9 @@ void cc__predict(cc_world *w, int i)
                 cc__try_circle(w, B, bi, fixed, j, w->now, &best, &tests);
     } else {
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-        int32_t cx = bi->cx, cy = bi->cy, x, y;
+        int32_t cx = bi->cx, cy = bi->cy, y;
         for (y = cy - 1; y <= cy + 1; y++)
-            for (x = cx - 1; x <= cx + 1; x++)
-                cc__scan_cell(w, B, slot, i, fixed, x, y, &best, &tests);
+            cc__scan_row(w, B, slot, i, fixed, cx - 1, y, &best, &tests);
         for (j = w->large_head; j >= 0; j = B[j].next)
             if (j != i)
                 cc__try_circle(w, B, bi, fixed, j, w->now, &best, &tests);
@@ -215,16 +233,10 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
     best.kind = ev->kind;
     best.partner = ev->partner;
     best.pcount = ev->pcount;
-    for (k = -1; k <= 1; k++) {
-        if (dir == 0)
-            cc__scan_cell(w, B, slot, i, fixed, cx + 1, cy + k, &best, &tests);
-        else if (dir == 1)
-            cc__scan_cell(w, B, slot, i, fixed, cx - 1, cy + k, &best, &tests);
-        else if (dir == 2)
-            cc__scan_cell(w, B, slot, i, fixed, cx + k, cy + 1, &best, &tests);
-        else
-            cc__scan_cell(w, B, slot, i, fixed, cx + k, cy - 1, &best, &tests);
-    }
+    for (k = -1; k <= 1 && dir < 2; k++) /* a new column of cells right or left */
+        cc__scan_cell(w, B, slot, i, fixed, dir == 0 ? cx + 1 : cx - 1, cy + k, &best, &tests);
+    if (dir >= 2) /* a new row of cells above or below */
+        cc__scan_row(w, B, slot, i, fixed, cx - 1, dir == 2 ? cy + 1 : cy - 1, &best, &tests);
     w->stats.pairs_tested += tests;
     t_cross = cc__cross_time(w, &B[i], &ndir);
     cc__finish(w, i, &best, t_cross, ndir);
