@@ -442,6 +442,150 @@ static void test_rest_speed_ends_collapse(void)
     TEST_ASSERT_TRUE(with < without);
 }
 
+/* Circles placed overlapping before the first step: the first step pushes them apart (equal
+ * masses: 0.25 each, so the centres end 2 apart) and, as they approach, exchanges velocities.
+ * A circle placed through a wall is pushed out along the wall's normal. */
+static void test_overlap_at_start(void)
+{
+    tw_mem m;
+    cc_world *w = world(&m, 3, 1, 1.0);
+    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(1.5, 0, -1, 0, 1, 1), c = circle(0, 10.5, 0, 0, 1, 1), got;
+    cc_segment floor_ = segment(-5, 10, 5, 10);
+    (void)cc_world_add_segment(w, &floor_);
+    (void)cc_world_add_circle(w, &a);
+    (void)cc_world_add_circle(w, &b);
+    (void)cc_world_add_circle(w, &c);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.0));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(-0.25, got.pos.x);
+    TEST_ASSERT_EQUAL_DOUBLE(-1.0, got.vel.x);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(1.75, got.pos.x);
+    TEST_ASSERT_EQUAL_DOUBLE(1.0, got.vel.x);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 2, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(11.0, got.pos.y); /* out of the wall y = 10: centre at 10 + 1 */
+    TEST_ASSERT_EQUAL_UINT64(1, stats(w).collisions); /* c was at rest: no impulse */
+    TEST_ASSERT_EQUAL_DOUBLE(0.5, stats(w).max_overlap); /* the deepest overlap seen */
+    tw_free(&m);
+}
+
+/* A world with a grid (more than 32 circles) and an immovable circle far wider than its cells:
+ * the obstacle goes on the large list and every circle still bounces off it. 20 circles on a
+ * ring of radius 30 fly at speed 1 towards a fixed disc of radius 10 at the centre (at radius 11
+ * they are still 2 pi 11 / 20 = 3.5 apart: they never touch each other); each touches the disc
+ * when its centre is 11 from the centre, at t = 19, and comes straight back. 20 more circles
+ * rest far away, only to make the world big enough for a grid. */
+static void test_large_obstacle_in_grid(void)
+{
+    enum { RING = 20, N = 41 };
+    tw_mem m;
+    cc_world *w = world(&m, N, 0, 1.0);
+    cc_circle disc = circle(0, 0, 0, 0, 10, INFINITY), got;
+    int i;
+    (void)cc_world_add_circle(w, &disc);
+    for (i = 1; i <= RING; i++) {
+        double a = 6.283185307179586 * i / RING;
+        cc_circle c = circle(30 * cos(a), 30 * sin(a), -cos(a), -sin(a), 1, 1);
+        (void)cc_world_add_circle(w, &c);
+    }
+    for (i = RING + 1; i < N; i++) {
+        cc_circle c = circle(1000 + 3 * i, 0, 0, 0, 1, 1);
+        (void)cc_world_add_circle(w, &c);
+    }
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 38.0));
+    for (i = 1; i <= RING; i++) {
+        double a = 6.283185307179586 * i / RING;
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, i, &got));
+        /* back at radius 30 at t = 38, moving outwards */
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, 30 * cos(a), got.pos.x);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-9, 30 * sin(a), got.pos.y);
+        TEST_ASSERT_DOUBLE_WITHIN(1e-12, cos(a), got.vel.x);
+    }
+    TEST_ASSERT_EQUAL_UINT64(RING, stats(w).collisions);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, got.pos.x);
+    tw_free(&m);
+}
+
+/* An immovable circle with a velocity (a paddle at speed 2) strikes a resting unit circle: the
+ * circle leaves at twice the paddle's speed (elastic bounce off an infinite mass), the paddle
+ * keeps its own. Paddle radius 1 at x = 0, ball at x = 5: contact at t = (5 - 2) / 2 = 1.5. */
+static void test_moving_immovable(void)
+{
+    tw_mem m;
+    cc_world *w = world(&m, 2, 0, 1.0);
+    cc_circle paddle = circle(0, 0, 2, 0, 1, INFINITY), ball = circle(5, 0, 0, 0, 1, 1), got;
+    (void)cc_world_add_circle(w, &paddle);
+    (void)cc_world_add_circle(w, &ball);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 2.0));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(4.0, got.vel.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 5.0 + 4.0 * 0.5, got.pos.x);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(2.0, got.vel.x);
+    TEST_ASSERT_EQUAL_DOUBLE(4.0, got.pos.x);
+    tw_free(&m);
+}
+
+/* Churn: a box gas where every step removes some circles, adds new ones in free places (at
+ * rest or moving) and changes the velocity of others, all between steps of a running world.
+ * Exercises the incremental paths (refiling, predicting neighbours, stale events): nothing
+ * overlaps, nothing escapes, every id stays as given. */
+static void test_churn(void)
+{
+    enum { N = 300 };
+    static cc_circle c[N];
+    static int ids[N];
+    tw_mem m;
+    cc_world *w = world(&m, N, 4, 1.0);
+    double L = tw_fill_box(w, N - 20, 1.0, 0.3, 77);
+    uint64_t seed = 8;
+    int k, n;
+    for (k = 0; k < 60; k++) {
+        int r;
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.7));
+        n = cc_world_get_circles(w, ids, c, N);
+        for (r = 0; r < 4 && n > 0; r++) { /* remove a few */
+            int pick = (int)(tw_rand(&seed) * n);
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_remove_circle(w, ids[pick]));
+            ids[pick] = ids[--n];
+        }
+        for (r = 0; r < 3; r++) { /* new velocities for some */
+            int pick = (int)(tw_rand(&seed) * n);
+            cc_circle got;
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, ids[pick], &got));
+            got.vel.x = 4 * tw_rand(&seed) - 2;
+            got.vel.y = (k % 3 == 0) ? 0.0 : 4 * tw_rand(&seed) - 2;
+            if (k % 5 == 0)
+                got.vel.x = got.vel.y = 0.0; /* stop it: movers must find it */
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle(w, ids[pick], &got));
+        }
+        for (r = 0; r < 4; r++) { /* add where there is room */
+            int tries;
+            for (tries = 0; tries < 50; tries++) {
+                cc_circle nc = circle(1 + (L - 2) * tw_rand(&seed), 1 + (L - 2) * tw_rand(&seed),
+                                      (r & 1) ? 2 * tw_rand(&seed) - 1 : 0.0, (r & 1) ? 2 * tw_rand(&seed) - 1 : 0.0,
+                                      1, 1);
+                int j, free_ = 1, id;
+                n = cc_world_get_circles(w, ids, c, N);
+                for (j = 0; j < n && free_; j++)
+                    free_ = hypot(c[j].pos.x - nc.pos.x, c[j].pos.y - nc.pos.y) > 2.0 + 1e-9;
+                if (!free_)
+                    continue;
+                id = cc_world_add_circle(w, &nc);
+                TEST_ASSERT_TRUE(id >= 0);
+                break;
+            }
+        }
+        n = cc_world_get_circles(w, NULL, c, N);
+        TEST_ASSERT_EQUAL_INT(0, tw_escapes(c, n, L, TW_OVERLAP_TOL));
+        TEST_ASSERT_TRUE(tw_max_rel_overlap(c, n, 1.0) < TW_OVERLAP_TOL);
+    }
+    TEST_ASSERT_TRUE(stats(w).collisions > 1000);
+    TEST_ASSERT_TRUE(tw_canary_ok(&m));
+    tw_free(&m);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -457,5 +601,9 @@ int main(void)
     RUN_TEST(test_remove_mid_flight);
     RUN_TEST(test_event_cap_stops_collapse);
     RUN_TEST(test_rest_speed_ends_collapse);
+    RUN_TEST(test_overlap_at_start);
+    RUN_TEST(test_large_obstacle_in_grid);
+    RUN_TEST(test_moving_immovable);
+    RUN_TEST(test_churn);
     return UNITY_END();
 }
