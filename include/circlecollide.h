@@ -186,8 +186,8 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * Memory    Everything lives inside [memory, memory + bytes): the world stores no address, not
  *           even into its own block, so a world may be copied (memcpy) to other 16-byte aligned
  *           memory of the same size and used from there. It keeps no pointer to the caller's
- *           defs, circles or segments (it copies them). About 130 bytes per circle plus 32 per
- *           wall.
+ *           defs, circles or segments (it copies them). About 150 bytes per circle (one 64-byte
+ *           line of hot state, the predicted event, queue and grid entries) plus 32 per wall.
  * Ids       cc_world_add_circle returns the most recently removed id when there is one (removed
  *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid and names the same
  *           circle until it is removed; other circles are never renumbered.
@@ -277,7 +277,8 @@ typedef void (*cc_contact_fn)(const cc_contact_event *event, void *user);
 
 /* Fill with cc_world_def_init, then change what you need. struct_size comes first so that a
  * library newer than the caller's header uses defaults for the fields the caller lacks; every
- * def must reach at least up to and including restitution. Capacities are at most 2^26. */
+ * def must reach at least up to and including restitution. Capacities are at most 2^26 (and
+ * small enough that the world's size fits in a size_t). */
 typedef struct cc_world_def {
     size_t struct_size;       /* sizeof(cc_world_def) as the caller compiled it */
     int max_circles;          /* capacity for circles, >= 0 (default 64) */

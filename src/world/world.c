@@ -48,6 +48,10 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
         !(out->rest_speed >= 0.0 && isfinite(out->rest_speed)) ||
         !(out->cell_size >= 0.0 && isfinite(out->cell_size)) || out->max_events == 0)
         return CC_ERR_INVALID;
+    /* where size_t has 32 bits, the capacities must also leave the byte count representable */
+    if ((size_t)out->max_circles > (SIZE_MAX - 65536u) / 1024u ||
+        (size_t)out->max_segments > (SIZE_MAX - 65536u) / 1024u)
+        return CC_ERR_INVALID;
     return CC_OK;
 }
 
