@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Refreshes the demo's golden checksums (tests/demo_golden/*.sha256) from the current code, for
 # when the world's behaviour changed on purpose. Look at the frames it prints the folders of
-# before committing the new values. Builds in build-demo/ (or $CC_BUILD_DIR).
+# before committing the new values. Run it on the tree you commit (it builds the working tree,
+# uncommitted library changes included). Builds in build-demo/ (or $CC_BUILD_DIR).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${CC_BUILD_DIR:-$root/build-demo}

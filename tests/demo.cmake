@@ -7,7 +7,8 @@
 #                         differs from the first, and the SHA-256 of all frames equals
 #                         tests/demo_golden/<scene>.sha256
 #   demo_cli_<case>       bad command lines exit 2 with a message naming the problem on stderr;
-#                         an unusable --out exits 1; --help exits 0
+#                         an unusable --out exits 1; --help exits 0; --mode swept and discrete
+#                         run (no golden: those modes are the world's to change)
 #
 # Refreshing the golden checksums. They are the program's own output, taken when its frames
 # were looked at and judged right; they change whenever the world's behaviour changes (e.g.
@@ -51,8 +52,8 @@ demo_golden(cradle --size 160x90 --frames 16 --fps 20)
 demo_golden(gas --size 160x90 --frames 4 --fps 20 --seed 7)
 demo_golden(tunnel --size 192x108 --frames 12 --fps 30)
 
-# demo_cli(NAME EXIT TEXT args...): cc_demo exits with EXIT and stderr (stdout for --help)
-# contains TEXT.
+# demo_cli(NAME EXIT TEXT args...): cc_demo exits with EXIT and stderr (on success stdout or
+# stderr) contains TEXT.
 function(demo_cli name code text)
   string(REPLACE ";" " " _args "${ARGN}")
   add_test(NAME demo_cli_${name}
@@ -64,6 +65,10 @@ endfunction()
 
 set(_ok --scene cradle --frames 1)
 demo_cli(help 0 "usage: cc_demo --scene NAME --frames N --out DIR" --help)
+demo_cli(mode_swept 0 "SWEPT   : world time 0.500" --scene air-hockey --frames 11 --fps 20
+  --size 64x36 --mode swept --out @OUT@)
+demo_cli(mode_discrete 0 "DISCRETE: world time 0.500" --scene pool --frames 11 --fps 20
+  --size 64x36 --mode discrete --out @OUT@)
 demo_cli(no_arguments 2 "cc_demo: missing --scene")
 demo_cli(missing_frames 2 "missing --frames" --scene pool --out @OUT@)
 demo_cli(missing_out 2 "missing --out" --scene pool --frames 2)

@@ -6,8 +6,8 @@
 #   cli:     -DDEMO= -DARGS= -DEXPECT_EXIT= -DEXPECT_TEXT= -DOUT=
 #            runs cc_demo with ARGS (@OUT@ stands for OUT/frames, @FILE@ for a regular file,
 #            @EMPTY@ as the last word for an empty argument) and checks its exit code, that
-#            stderr (stdout when EXIT is 0) contains EXPECT_TEXT, and that a failed run wrote
-#            nothing.
+#            stderr (stdout or stderr when EXIT is 0) contains EXPECT_TEXT, and that a failed run
+#            wrote nothing.
 
 separate_arguments(_args UNIX_COMMAND "${ARGS}")
 
@@ -35,7 +35,7 @@ if(DEFINED EXPECT_EXIT)
       "stdout: ${_out}\nstderr: ${_err}")
   endif()
   if(EXPECT_EXIT EQUAL 0)
-    set(_text "${_out}")
+    set(_text "${_out}${_err}")
   else()
     set(_text "${_err}")
     if(NOT _out STREQUAL "")
