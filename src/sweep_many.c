@@ -35,10 +35,14 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
     for (i = 0; i < n; i++) {
         int eL, eV, r;
         double t = HUGE_VAL, R = a->radius[i] + b->radius[i];
-        cc_vec2 n_unused;
-        cc_vec2 dp = cc__diff(cc__v(a->px[i], a->py[i]), cc__v(b->px[i], b->py[i]), &eL);
-        cc_vec2 dv = cc__diff(cc__v(a->vx[i], a->vy[i]), cc__v(b->vx[i], b->vy[i]), &eV);
-        r = cc__sweep_rel(dp, dv, eL ? R * 0.5 : R, eL, eV, t_max, &t, &n_unused);
+        cc_vec2 n, pa = cc__v(a->px[i], a->py[i]), va = cc__v(a->vx[i], a->vy[i]);
+        cc_vec2 dp = cc__diff(pa, cc__v(b->px[i], b->py[i]), &eL);
+        cc_vec2 dv = cc__diff(va, cc__v(b->vx[i], b->vy[i]), &eV);
+        r = cc__sweep_rel(dp, dv, eL ? R * 0.5 : R, eL, eV, t_max, &t, &n);
+        /* as cc_sweep: a contact point beyond the representable plane is a miss (found by the
+         * fuzzer: the batch said CC_HIT where cc_sweep said CC_MISS) */
+        if (r == CC_HIT && !cc__vec_ok(cc__advance(cc__advance(pa, va, t), n, a->radius[i])))
+            r = CC_MISS;
         if (r == CC_MISS)
             t = HUGE_VAL;
         else
