@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# CI step: fuzzing (docs/NUMERICS.md). Builds the libFuzzer target fuzz_pair with clang, the
+# library and the harness instrumented alike (libFuzzer coverage, ASan, UBSan), and runs it for
+# CC_FUZZ_SECONDS (default 60) starting from the committed corpus tests/fuzz/corpus/ (read only:
+# what the run finds goes to a scratch folder). A contract violation (tests/fuzz/fuzz_checks.c),
+# a sanitizer report or a crash fails the step and prints the input. To keep an input, copy it
+# into tests/fuzz/corpus/: test_fuzz_replay replays every file there on every ctest run.
+# To grow the corpus: run longer, then `fuzz_pair -merge=1 tests/fuzz/corpus <scratch folder>`.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+dir=${CC_FUZZ_BUILD_DIR:-$root/build-fuzz}
+secs=${CC_FUZZ_SECONDS:-60}
+command -v clang >/dev/null || { echo "30-fuzz: clang not found (apt-get install clang libclang-rt-14-dev)"; exit 1; }
+
+mkdir -p "$dir"
+cmake -S "$root" -B "$dir" -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCC_WERROR=ON \
+  -DCC_FUZZ=ON -DCC_BUILD_SHARED=OFF -DCC_BUILD_DEMO=OFF -DCC_BUILD_BENCH=OFF \
+  -DCMAKE_C_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
+  >"$dir/configure.log" 2>&1 || { cat "$dir/configure.log"; exit 1; }
+cmake --build "$dir" -j "${CC_JOBS:-2}" --target fuzz_pair test_fuzz_replay
+
+run=$dir/run
+rm -rf "$run"
+mkdir -p "$run/new" "$run/crashes"
+rc=0
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+  "$dir/tests/fuzz_pair" -max_total_time="$secs" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+  -artifact_prefix="$run/crashes/" "$run/new" "$root/tests/fuzz/corpus" >"$run/log.txt" 2>&1 || rc=$?
+grep -E "^fuzz:|ERROR|SUMMARY|runtime error|stat::number_of_executed_units|stat::new_units_added|Done" "$run/log.txt" || true
+if [ $rc -ne 0 ] || [ -n "$(ls -A "$run/crashes")" ]; then
+  tail -n 40 "$run/log.txt"
+  for f in "$run/crashes"/*; do
+    [ -e "$f" ] || continue
+    echo "30-fuzz: failing input $f:"
+    od -A d -t x1 "$f" | head -n 20
+  done
+  echo "30-fuzz: FAILED (exit $rc); keep the input in tests/fuzz/corpus/ once fixed"
+  exit 1
+fi
+# the replay of the committed corpus, built with the same sanitizers (no libFuzzer)
+(cd "$root/tests/fuzz/corpus" && "$dir/tests/test_fuzz_replay" * | tail -n 3)
+echo "30-fuzz: ${secs}s of fuzzing, no violation"
