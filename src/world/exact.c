@@ -24,13 +24,19 @@ int cc__step_exact(cc_world *w, double t_end)
     cc__body *B = CC__ARR(w, cc__body, off_body);
     const cc__event *EV = CC__CARR(w, cc__event, off_ev);
     uint64_t done = 0;
-    if (w->dirty)
+    if (w->dirty) {
         cc__rebuild(w);
+        cc__sort_bodies(w);
+    }
     for (;;) {
-        int i = cc__heap_top(w), j;
-        double t = cc__heap_top_key(w);
+        int i, j;
+        double t;
         const cc__event *e;
         cc__touch tc;
+        if (cc__sort_due(w))
+            cc__sort_bodies(w);
+        i = cc__heap_top(w);
+        t = cc__heap_top_key(w);
         if (i < 0 || t > t_end)
             break;
         if (done == w->max_events)

@@ -141,7 +141,7 @@ static void cc__scan_cell(const cc_world *w, const cc__body *B, const int32_t *s
     cc__scan_slot(w, B, slot, cc__grid_slot(w, x, y), i, i_fixed, x, y, best, tests);
 }
 
-/* The three cells (x0 .. x0 + 2, y): within a 16-cell block their slots are consecutive. */
+/* The three cells (x0 .. x0 + 2, y): within a tile their slots are consecutive. */
 static void cc__scan_row(const cc_world *w, const cc__body *B, const int32_t *slot, int i, int i_fixed, int32_t x0,
                          int32_t y, cc__cand *best, uint64_t *tests)
 {
@@ -149,7 +149,7 @@ static void cc__scan_row(const cc_world *w, const cc__body *B, const int32_t *sl
     int32_t x;
     for (x = x0; x < x0 + 3; x++) {
         if (x != x0)
-            s = ((uint32_t)x & 15u) ? (s + 1u) & w->slot_mask : cc__grid_slot(w, x, y);
+            s = ((uint32_t)x & ((1u << w->tile_bits_x) - 1u)) ? (s + 1u) & w->slot_mask : cc__grid_slot(w, x, y);
         cc__scan_slot(w, B, slot, s, i, i_fixed, x, y, best, tests);
     }
 }

@@ -27,8 +27,8 @@ static void cc__report(cc_world *w, int a, int b, int seg, const cc_contact *k, 
     w->stats.collisions++;
     if (w->on_contact == NULL)
         return;
-    e.a = a;
-    e.b = b;
+    e.a = CC__CARR(w, int32_t, off_idx2id)[a]; /* the caller's ids, not storage indices */
+    e.b = b >= 0 ? CC__CARR(w, int32_t, off_idx2id)[b] : -1;
     e.segment = seg;
     e.t = w->now;
     e.point = k->point;

@@ -72,7 +72,7 @@ static uint32_t cc__slots(int max_circles)
 static size_t cc__layout(const cc_world_def *d, cc_world *w)
 {
     size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
-    size_t offs[9], sizes[9];
+    size_t offs[11], sizes[11];
     int k;
     sizes[0] = n * sizeof(cc__body);
     sizes[1] = n * sizeof(cc__event);
@@ -83,7 +83,9 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[6] = n * sizeof(int32_t); /* touched list */
     sizes[7] = (size_t)cc__slots(d->max_circles) * sizeof(int32_t);
     sizes[8] = (size_t)d->max_segments * sizeof(cc_segment);
-    for (k = 0; k < 9; k++) {
+    sizes[9] = n * sizeof(int32_t);  /* id -> index */
+    sizes[10] = n * sizeof(int32_t); /* index -> id */
+    for (k = 0; k < 11; k++) {
         offs[k] = off;
         off += cc__align16(sizes[k]);
     }
@@ -97,6 +99,8 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_touched = offs[6];
         w->off_slot = offs[7];
         w->off_seg = offs[8];
+        w->off_id2idx = offs[9];
+        w->off_idx2id = offs[10];
     }
     return off;
 }
@@ -135,6 +139,13 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
     w->now = 0.0;
     w->use_grid = d.max_circles > CC__SMALL_WORLD;
     w->slot_mask = cc__slots(d.max_circles) - 1u;
+    {
+        uint32_t bits = 0;
+        while (bits < 31 && (1u << (bits + 1)) <= w->slot_mask + 1u)
+            bits++;
+        w->tile_bits_x = (bits + 1) / 2; /* a square tile (or twice as wide) of all the slots */
+        w->tile_bits_y = bits / 2;
+    }
     w->dirty = 1;
     w->large_head = -1;
     w->stats.struct_size = sizeof w->stats;
@@ -152,9 +163,14 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
 
 static int cc__world_ok(const cc_world *w) { return w != NULL && w->magic == CC__WORLD_MAGIC; }
 
+/* The storage index of live circle id, or -1. */
 static int cc__live(const cc_world *w, int id)
 {
-    return id >= 0 && id < w->id_end && (CC__CARR(w, cc__cold, off_cold)[id].flags & CC__ALIVE);
+    int k;
+    if (id < 0 || id >= w->id_end)
+        return -1;
+    k = CC__CARR(w, int32_t, off_id2idx)[id];
+    return (CC__CARR(w, cc__cold, off_cold)[k].flags & CC__ALIVE) ? k : -1;
 }
 
 /* Cell size for the current circles: at least the largest movable diameter (so that touching
@@ -180,7 +196,7 @@ double cc__world_cell_size(const cc_world *w)
     return w->cell_hint > cs ? w->cell_hint : cs;
 }
 
-/* Writes c into body slot id at the current time and files it. */
+/* Writes c into the body at storage index id at the current time and files it. */
 static void cc__put(cc_world *w, int id, const cc_circle *c)
 {
     cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
@@ -211,13 +227,15 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
     if (w->n_circles >= w->max_circles)
         return CC_ERR_FULL;
     if (w->free_top > 0) {
-        id = CC__ARR(w, int32_t, off_free)[--w->free_top];
+        id = CC__ARR(w, int32_t, off_free)[--w->free_top]; /* it keeps its storage index */
     } else {
         id = w->id_end++;
+        CC__ARR(w, int32_t, off_id2idx)[id] = id;
+        CC__ARR(w, int32_t, off_idx2id)[id] = id;
         CC__ARR(w, cc__body, off_body)[id].count = 0; /* first use of this slot of memory */
     }
     w->n_circles++;
-    cc__put(w, id, c);
+    cc__put(w, CC__ARR(w, int32_t, off_id2idx)[id], c);
     return id;
 }
 
@@ -234,23 +252,25 @@ static void cc__unfile(cc_world *w, int id)
 
 CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c)
 {
+    int k;
     if (!cc__world_ok(w) || w->busy || !cc__circle_ok(c))
         return CC_ERR_INVALID;
-    if (!cc__live(w, id))
+    if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
-    cc__unfile(w, id);
-    cc__put(w, id, c);
+    cc__unfile(w, k);
+    cc__put(w, k, c);
     return CC_OK;
 }
 
 CC_API int cc_world_remove_circle(cc_world *w, int id)
 {
+    int k;
     if (!cc__world_ok(w) || w->busy)
         return CC_ERR_INVALID;
-    if (!cc__live(w, id))
+    if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
-    cc__unfile(w, id);
-    CC__ARR(w, cc__cold, off_cold)[id].flags = 0;
+    cc__unfile(w, k);
+    CC__ARR(w, cc__cold, off_cold)[k].flags = 0;
     CC__ARR(w, int32_t, off_free)[w->free_top++] = id;
     w->n_circles--;
     return CC_OK;
@@ -280,27 +300,28 @@ static void cc__get(const cc_world *w, int id, cc_circle *out)
 
 CC_API int cc_world_get_circle(const cc_world *w, int id, cc_circle *out)
 {
+    int k;
     if (!cc__world_ok(w) || out == NULL)
         return CC_ERR_INVALID;
-    if (!cc__live(w, id))
+    if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
-    cc__get(w, id, out);
+    cc__get(w, k, out);
     return CC_OK;
 }
 
 CC_API int cc_world_get_circles(const cc_world *w, int *ids, cc_circle *out, int capacity)
 {
-    int i, k = 0;
+    int i, k = 0, idx;
     if (!cc__world_ok(w) || capacity < 0)
         return CC_ERR_INVALID;
     for (i = 0; i < w->id_end; i++) {
-        if (!cc__live(w, i))
+        if ((idx = cc__live(w, i)) < 0)
             continue;
         if (k < capacity) {
             if (ids != NULL)
                 ids[k] = i;
             if (out != NULL)
-                cc__get(w, i, &out[k]);
+                cc__get(w, idx, &out[k]);
         }
         k++;
     }

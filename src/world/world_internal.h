@@ -88,12 +88,15 @@ struct cc_world {
     int free_top;     /* removed ids waiting for reuse (a stack) */
     int heap_n;
     int n_touched;    /* bodies on the touched list */
+    uint64_t events_at_sort; /* stats.events when storage was last sorted */
     int large_head;   /* list of CC__LARGE circles */
     uint32_t slot_mask;
+    uint32_t tile_bits_x, tile_bits_y; /* log2 of the tile's width and height in cells */
     cc_world_stats stats;
 
     /* byte offsets from the header to the arrays */
     size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_free, off_touched, off_slot, off_seg;
+    size_t off_id2idx, off_idx2id; /* a circle's id <-> its storage index (see sort.c) */
 };
 
 #define CC__WORLD_MAGIC 0x63637731u /* "ccw1" */
@@ -130,15 +133,18 @@ void cc__grid_insert(cc_world *w, int id); /* files the body by its position at 
 void cc__grid_remove(cc_world *w, int id);
 void cc__grid_move(cc_world *w, int id, int dir); /* a cell crossing */
 int32_t cc__grid_coord(const cc_world *w, double x);
-/* Blocks of 16 x 16 cells map to consecutive runs of slots (row by row), so that the 3x3 cells
- * around a circle mostly share cache lines; each block starts at a hashed offset, so that
- * scenes of any shape spread over the whole table. */
+/* The table of S = 2^k slots is laid over the plane as tiles of W x H cells (W * H = S, rows of
+ * W consecutive slots), so that a compact scene of fewer cells than slots maps its cells to
+ * distinct slots and the 3x3 cells around a circle share three runs of slots; each tile starts
+ * at a hashed offset, so that larger or elongated scenes spread over the whole table. */
 static inline uint32_t cc__grid_slot(const cc_world *w, int32_t cx, int32_t cy)
 {
     uint32_t ux = (uint32_t)cx, uy = (uint32_t)cy;
-    uint64_t h = (uint64_t)(ux >> 4) * UINT64_C(0x9E3779B97F4A7C15) ^ (uint64_t)(uy >> 4) * UINT64_C(0xC2B2AE3D27D4EB4F);
+    uint64_t h = (uint64_t)(ux >> w->tile_bits_x) * UINT64_C(0x9E3779B97F4A7C15) ^
+                 (uint64_t)(uy >> w->tile_bits_y) * UINT64_C(0xC2B2AE3D27D4EB4F);
     h ^= h >> 29;
-    return ((uint32_t)h + ((ux & 15u) | (uy & 15u) << 4)) & w->slot_mask;
+    return ((uint32_t)h + (ux & ((1u << w->tile_bits_x) - 1u)) + ((uy & ((1u << w->tile_bits_y) - 1u)) << w->tile_bits_x)) &
+           w->slot_mask;
 }
 
 /* ---- predict.c: a body's earliest event (EXACT) ---- */
@@ -172,6 +178,17 @@ int cc__world_take_touched(cc_world *w);
 /* Pushes apart body a and circle b (b >= 0) or segment seg when they overlap, then resolves the
  * contact if they approach. Both are at w->now. Returns 1 when anything moved. */
 int cc__world_unoverlap(cc_world *w, int a, int b, int seg);
+
+/* ---- sort.c: storage in space-filling-curve order ---- */
+/* Inside the library a circle is named by its storage index; the API's ids map to indices
+ * through id2idx / idx2id. EXACT sorts storage by grid cell (Morton order) now and then, so
+ * that neighbours share cache lines; then every body is refiled and predicted again. */
+void cc__sort_bodies(cc_world *w);
+/* Sorting is due: enough events since the last one for its cost to be small. */
+static inline int cc__sort_due(const cc_world *w)
+{
+    return w->use_grid && w->stats.events - w->events_at_sort > (uint64_t)w->n_circles * 64u + 1024u;
+}
 
 /* ---- overlap.c / exact.c / swept.c / discrete.c ---- */
 void cc__rebuild(cc_world *w); /* grid, overlaps and (EXACT) every prediction, at w->now */
