@@ -186,7 +186,7 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * Memory    Everything lives inside [memory, memory + bytes): the world stores no address, not
  *           even into its own block, so a world may be copied (memcpy) to other 16-byte aligned
  *           memory of the same size and used from there. It keeps no pointer to the caller's
- *           defs, circles or segments (it copies them). About 150 bytes per circle (one 64-byte
+ *           defs, circles or segments (it copies them). About 160 bytes per circle (one 64-byte
  *           line of hot state, the predicted event, queue and grid entries) plus 32 per wall.
  * Ids       cc_world_add_circle returns the most recently removed id when there is one (removed
  *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid and names the same
@@ -211,7 +211,8 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           circle when none is movable), or def.cell_size when that is larger. It is
  *           recomputed, and the grid rebuilt, at the next step after a larger circle was added
  *           or set. An immovable circle wider than a cell is kept on a list that every moving
- *           circle checks. Cells are counted up to 2^40 from the origin in each direction.
+ *           circle checks. Cells are counted up to 2^30 from the origin in each direction (beyond,
+ *           circles share the outermost cells: correct, but slower).
  * Tolerance Impacts are computed from rounded positions, so two bodies touching after an impact
  *           may overlap by rounding: about 1e-13 of their radius sum for coordinates within a
  *           few thousand radii of the origin, growing with |coordinates| / radius (the tests
@@ -243,7 +244,9 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           immovable circles and through walls.
  * Threads   One thread at a time per world; distinct worlds are independent.
  * Determinism  Identical calls give bit-identical results, wherever the world's memory is:
- *           ties between events are broken by ids, never by addresses. */
+ *           ties between events are broken by the circles' storage order, never by addresses.
+ *           (EXACT keeps circles stored in the order of their grid cells, re-sorted from time to
+ *           time, so that neighbours share cache lines; ids are not affected.) */
 
 typedef struct cc_world cc_world; /* opaque; lives inside the memory given to cc_world_init */
 
