@@ -7,6 +7,7 @@ list(APPEND CC_WORLD_SOURCES
   world/resolve.c   # every impulse and push-apart
   world/overlap.c   # overlaps made by the caller; the full rebuild
   world/sort.c      # storage in Morton order of the cells; ids <-> storage indices
+  world/near.c      # what touches a circle now (for simultaneous-impact resolvers)
   world/exact.c     # EXACT stepping
   world/swept.c     # SWEPT stepping
   world/discrete.c  # DISCRETE stepping

@@ -179,6 +179,13 @@ int cc__world_take_touched(cc_world *w);
  * contact if they approach. Both are at w->now. Returns 1 when anything moved. */
 int cc__world_unoverlap(cc_world *w, int a, int b, int seg);
 
+/* ---- near.c: what touches a circle now (for simultaneous-impact resolvers) ---- */
+typedef void (*cc__touch_visit)(void *ctx, int j, int seg);
+/* Calls visit(ctx, j, -1) for every circle j whose distance from circle k at w->now is at most
+ * their radius sum + tol, and visit(ctx, -1, s) for every wall s within k's radius + tol.
+ * Indices are storage indices. Returns the number of visits. */
+int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit visit, void *ctx);
+
 /* ---- sort.c: storage in space-filling-curve order ---- */
 /* Inside the library a circle is named by its storage index; the API's ids map to indices
  * through id2idx / idx2id. EXACT sorts storage by grid cell (Morton order) now and then, so
