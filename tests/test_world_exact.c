@@ -586,6 +586,66 @@ static void test_churn(void)
     tw_free(&m);
 }
 
+/* Units are the caller's: the same gas with lengths (and speeds) scaled by 2^30 or 2^-30, exact
+ * powers of two, runs through the very same events and ends bit for bit at the scaled state. */
+static void scaled_gas(double s, cc_circle *out, int n, uint64_t *events)
+{
+    cc_world_def d;
+    tw_mem m;
+    cc_world *w;
+    uint64_t seed = 21;
+    double L = 40.0 * s;
+    int i;
+    cc_segment walls[4];
+    cc_world_def_init(&d);
+    d.max_circles = n;
+    d.max_segments = 4;
+    w = tw_make(&m, &d, 0);
+    walls[0] = segment(0, 0, L, 0);
+    walls[1] = segment(L, 0, L, L);
+    walls[2] = segment(L, L, 0, L);
+    walls[3] = segment(0, L, 0, 0);
+    for (i = 0; i < 4; i++)
+        (void)cc_world_add_segment(w, &walls[i]);
+    for (i = 0; i < n; i++) {
+        cc_circle c = circle(s * (2.5 + 4.0 * (i % 9)), s * (2.5 + 4.0 * (i / 9)), s * (2 * tw_rand(&seed) - 1),
+                             s * (2 * tw_rand(&seed) - 1), s * (0.5 + tw_rand(&seed)), 1 + tw_rand(&seed));
+        (void)cc_world_add_circle(w, &c);
+    }
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 50.0));
+    TEST_ASSERT_EQUAL_INT(n, cc_world_get_circles(w, NULL, out, n));
+    *events = stats(w).events;
+    tw_free(&m);
+}
+
+static void test_scale_invariance(void)
+{
+    enum { N = 72 };
+    static cc_circle base[N], big[N], small[N];
+    uint64_t e0, e1, e2;
+    int i;
+    scaled_gas(1.0, base, N, &e0);
+    scaled_gas(0x1p30, big, N, &e1);
+    scaled_gas(0x1p-30, small, N, &e2);
+    TEST_ASSERT_EQUAL_UINT64(e0, e1);
+    TEST_ASSERT_EQUAL_UINT64(e0, e2);
+    for (i = 0; i < N; i++) { /* bit for bit: scale the small ones up, exactly */
+        small[i].pos.x *= 0x1p30;
+        small[i].pos.y *= 0x1p30;
+        small[i].vel.x *= 0x1p30;
+        small[i].vel.y *= 0x1p30;
+        small[i].radius *= 0x1p30;
+        big[i].pos.x *= 0x1p-30;
+        big[i].pos.y *= 0x1p-30;
+        big[i].vel.x *= 0x1p-30;
+        big[i].vel.y *= 0x1p-30;
+        big[i].radius *= 0x1p-30;
+    }
+    TEST_ASSERT_EQUAL_MEMORY(base, big, sizeof base);
+    TEST_ASSERT_EQUAL_MEMORY(base, small, sizeof base);
+    TEST_ASSERT_TRUE(e0 > 1000);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -605,5 +665,6 @@ int main(void)
     RUN_TEST(test_large_obstacle_in_grid);
     RUN_TEST(test_moving_immovable);
     RUN_TEST(test_churn);
+    RUN_TEST(test_scale_invariance);
     return UNITY_END();
 }
