@@ -189,10 +189,12 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           defs, circles or segments (it copies them). About 160 bytes per circle (one 64-byte
  *           line of hot state, the predicted event, queue and grid entries) plus 32 per wall.
  * Ids       cc_world_add_circle returns the most recently removed id when there is one (removed
- *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid and names the same
- *           circle until it is removed; other circles are never renumbered.
+ *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid
+ *           and names the same circle until it is removed; others are never renumbered.
  * Time      Each circle moves along a straight line between impacts. cc_world_get_circle gives
  *           its state at the world time. Times are absolute (world time), in the scene's units.
+ *           Nothing depends on the unit of length: a scene scaled by a power of two runs
+ *           through the same events and ends at the scaled state, bit for bit.
  * Modes     CC_MODE_EXACT (event-driven, see below), CC_MODE_SWEPT and CC_MODE_DISCRETE (see
  *           cc_mode). All three use the same pair functions (cc_sweep, cc_sweep_segment,
  *           cc_respond, cc_respond_segment, cc_separate) and the same grid.
@@ -211,8 +213,8 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           circle when none is movable), or def.cell_size when that is larger. It is
  *           recomputed, and the grid rebuilt, at the next step after a larger circle was added
  *           or set. An immovable circle wider than a cell is kept on a list that every moving
- *           circle checks. Cells are counted up to 2^30 from the origin in each direction (beyond,
- *           circles share the outermost cells: correct, but slower).
+ *           circle checks. Cells are counted up to 2^30 from the origin in each direction
+ *           (beyond, circles share the outermost cells: correct, but slower).
  * Tolerance Impacts are computed from rounded positions, so two bodies touching after an impact
  *           may overlap by rounding: about 1e-13 of their radius sum for coordinates within a
  *           few thousand radii of the origin, growing with |coordinates| / radius (the tests
@@ -226,8 +228,8 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           inverse to the masses), then given the impact if the pair approaches; a circle
  *           overlapping a wall is pushed out along the wall's normal. Before the first step,
  *           and after a wall or a circle wider than the cells was added, this happens for all
- *           circles at the next step instead (which also rebuilds the grid). One
- *           pass is made; an overlap it leaves (chains of circles) heals as described above.
+ *           circles at the next step instead (which also rebuilds the grid). One pass is
+ *           made; an overlap it leaves (chains of circles) heals as described above.
  *           SWEPT does this at the start of each step, DISCRETE at the end.
  * Collapse  With restitution < 1 a group of bodies can collide infinitely often in a finite
  *           time (inelastic collapse), and bodies pressed together would exchange ever smaller
@@ -237,7 +239,7 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           consistent at the time of the last event processed; the next cc_world_step
  *           continues from there. A body squeezed between an immovable circle moving towards
  *           a wall (an impossible scene) hits that cap at every call.
- * Simultaneous  Impacts at the same instant are processed one pair at a time in (time, id)
+ * Simultaneous  Impacts at the same instant are processed one pair at a time, in a fixed
  *           order (issue 5 replaces this with a simultaneous-impact model).
  * Immovable Circles of mass +INFINITY: obstacles that nothing moves. They may have a velocity
  *           (kinematic bodies): they then move and push others, but pass through other
