@@ -193,8 +193,9 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           and names the same circle until it is removed; others are never renumbered.
  * Time      Each circle moves along a straight line between impacts. cc_world_get_circle gives
  *           its state at the world time. Times are absolute (world time), in the scene's units.
- *           Nothing depends on the unit of length: a scene scaled by a power of two runs
- *           through the same events and ends at the scaled state, bit for bit.
+ *           Nothing depends on the unit of length: a scene scaled by a power of two (with
+ *           rest_speed and cell_size scaled alike) runs through the same events and ends at the
+ *           scaled state, bit for bit.
  * Modes     CC_MODE_EXACT (event-driven, see below), CC_MODE_SWEPT and CC_MODE_DISCRETE (see
  *           cc_mode). All three use the same pair functions (cc_sweep, cc_sweep_segment,
  *           cc_respond, cc_respond_segment, cc_separate) and the same grid.
