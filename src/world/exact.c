@@ -1,6 +1,6 @@
 /* EXACT mode: event-driven stepping. The queue holds each moving body once, keyed by its next
  * event (its predicted hit or its cell crossing, whichever comes first); events are taken in
- * (time, id) order up to the end of the step. A hit on a circle whose count changed since the
+ * (time, storage index) order up to the end of the step. A hit on a circle whose count changed since the
  * prediction is stale: the body predicts again from now. Only the bodies an event involves are
  * advanced (lazily) and predicted again. */
 #include "world_internal.h"

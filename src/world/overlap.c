@@ -22,7 +22,8 @@ static void cc__refile_moved(cc_world *w, int only)
     }
 }
 
-/* Pushes body i out of everything it overlaps; calls visit(j) for each circle it moved. */
+/* Pushes body i out of everything it overlaps (only_higher: circles of higher index only, for
+ * a pass over all pairs); the circles moved are marked (cc__world_mark, CC__MOVED). */
 static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);

@@ -1,7 +1,7 @@
 # The world's sources (included by src/CMakeLists.txt).
 list(APPEND CC_WORLD_SOURCES
   world/world.c     # API, def handshake, memory layout, ids
-  world/events.c    # indexed binary heap of predicted events
+  world/events.c    # indexed 4-ary heap of predicted events
   world/grid.c      # hashed uniform cell list
   world/predict.c   # EXACT: a body's earliest event
   world/resolve.c   # every impulse and push-apart

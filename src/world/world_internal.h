@@ -121,7 +121,7 @@ static inline void cc__advance_body(cc__body *b, double t)
 /* Grid cell size for the current circles (>= largest movable diameter). */
 double cc__world_cell_size(const cc_world *w);
 
-/* ---- events.c: indexed binary heap of bodies keyed by (event time, id) ---- */
+/* ---- events.c: indexed 4-ary heap of bodies keyed by (event time, storage index) ---- */
 void cc__heap_update(cc_world *w, int id, double key); /* insert or move to its place */
 void cc__heap_remove(cc_world *w, int id);
 int cc__heap_top(const cc_world *w); /* -1 when empty */
