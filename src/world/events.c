@@ -1,9 +1,9 @@
 /* The event queue: an indexed 4-ary min-heap (half the depth of a binary one: fewer
- * unpredictable branches and scattered writes per update) holding each body that has a predicted event
- * (one per body, so its size is bounded by max_circles), keyed by (event time, storage index). The index
- * breaks ties, never an address: the order of simultaneous events is deterministic. Entries
- * carry their key, so sifting reads only the heap; hpos[id] is the body's index in the heap,
- * -1 when it is not queued. */
+ * unpredictable branches and scattered writes per update) holding each body that has a
+ * predicted event (one per body, so its size is bounded by max_circles), keyed by (event time,
+ * storage index). The index breaks ties, never an address: the order of simultaneous events is
+ * deterministic. Entries carry their key, so sifting reads only the heap; hpos[id] is the
+ * body's index in the heap, -1 when it is not queued. */
 #include "world_internal.h"
 
 static int cc__before(const cc__heap_entry *a, const cc__heap_entry *b)
