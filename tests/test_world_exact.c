@@ -646,6 +646,24 @@ static void test_scale_invariance(void)
     TEST_ASSERT_TRUE(e0 > 1000);
 }
 
+/* The same wall bounce in a world with room for 100 circles (so with a grid) holding just one:
+ * nothing in the grid's bookkeeping may depend on having company. */
+static void test_lone_circle_in_grid_world(void)
+{
+    tw_mem m;
+    cc_world *w = world(&m, 100, 1, 1.0);
+    cc_circle a = circle(5, 0, -2, 0, 1, 1), got;
+    cc_segment s = segment(0, -5, 0, 5);
+    (void)cc_world_add_segment(w, &s);
+    (void)cc_world_add_circle(w, &a);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 3.0));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(3.0, got.pos.x); /* wall at t = 2, then 1 back at speed 2 */
+    TEST_ASSERT_EQUAL_DOUBLE(2.0, got.vel.x);
+    TEST_ASSERT_EQUAL_UINT64(1, stats(w).collisions);
+    tw_free(&m);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -666,5 +684,6 @@ int main(void)
     RUN_TEST(test_moving_immovable);
     RUN_TEST(test_churn);
     RUN_TEST(test_scale_invariance);
+    RUN_TEST(test_lone_circle_in_grid_world);
     return UNITY_END();
 }

@@ -24,10 +24,8 @@ int cc__step_exact(cc_world *w, double t_end)
     cc__body *B = CC__ARR(w, cc__body, off_body);
     const cc__event *EV = CC__CARR(w, cc__event, off_ev);
     uint64_t done = 0;
-    if (w->dirty) {
+    if (w->dirty)
         cc__rebuild(w);
-        cc__sort_bodies(w);
-    }
     for (;;) {
         int i, j;
         double t;

@@ -88,9 +88,13 @@ void cc__rebuild(cc_world *w)
         ; /* everything is predicted below */
     if (w->mode == CC_MODE_EXACT) {
         cc__refile_moved(w, -1);
-        for (i = 0; i < w->id_end; i++)
-            if (C[i].flags & CC__ALIVE)
-                cc__predict(w, i);
+        if (w->use_grid) {
+            cc__sort_bodies(w); /* storage in cell order, then every prediction */
+        } else {
+            for (i = 0; i < w->id_end; i++)
+                if (C[i].flags & CC__ALIVE)
+                    cc__predict(w, i);
+        }
     } else {
         for (i = 0; i < w->id_end; i++)
             C[i].flags &= ~CC__MOVED;

@@ -72,7 +72,7 @@ void cc__sort_bodies(cc_world *w)
     cc__sort_entry *e = CC__ARR(w, cc__sort_entry, off_heap); /* the queue is rebuilt below */
     int n = w->id_end, p;
     w->events_at_sort = w->stats.events;
-    if (!w->use_grid || n < 2)
+    if (!w->use_grid)
         return;
     for (p = 0; p < n; p++) {
         e[p].idx = p;
