@@ -1,6 +1,6 @@
 /* Soak: a million collisions of a hard-disc gas in a closed box (walls are segments), checked
- * after every step for escapes, overlaps beyond the tolerance and energy drift. Built with
- * sanitizers it runs TW_SOAK_COLLISIONS instead (set by tests/world.cmake). */
+ * after every step for escapes, overlaps beyond the tolerance and energy drift. A slow build
+ * (e.g. sanitizers without optimisation) may define TW_SOAK_COLLISIONS lower. */
 #include "unity.h"
 
 #include "test_world_util.h"
