@@ -12,7 +12,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 dir=${CC_M4F_BUILD_DIR:-$root/build-m4f}
-limit=${CC_M4F_FLOAT_LIMIT:-4864}
+limit=${CC_M4F_FLOAT_LIMIT:-5120}
 target=4096
 command -v arm-none-eabi-gcc >/dev/null ||
   { echo "40-embedded: arm-none-eabi-gcc not found (apt-get install gcc-arm-none-eabi libnewlib-arm-none-eabi)"; exit 1; }
