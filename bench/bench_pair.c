@@ -74,7 +74,7 @@ int main(int argc, char **argv)
     const char *csv_path = NULL, *only = NULL;
     bench_pair_data d;
     bench_method methods[BENCH_MAX_METHODS];
-    int n_methods;
+    int n_methods, n_all;
     double *times[BENCH_MAX_METHODS], *times_hot[BENCH_MAX_METHODS], *hot_raw[BENCH_MAX_METHODS];
     double *t_ref = NULL, *t_reff = NULL, *lo_ref = NULL, *lo_reff = NULL;
     int *code_ref = NULL, *code_reff = NULL;
@@ -105,15 +105,18 @@ int main(int argc, char **argv)
     bench_pair_data_init(&d, n);
     make_pairs(n, 20261122u, d.a, d.b);
     bench_pair_data_derive(&d);
-    n_methods = bench_methods(methods, n);
+    n_all = n_methods = bench_methods(methods, n);
     if (only != NULL) {
+        bench_method keep;
         for (k = 0; k < n_methods && strcmp(methods[k].name, only); k++)
             ;
         if (k == n_methods) {
             fprintf(stderr, "bench_pair: no method %s in this build\n", only);
             return 2;
         }
-        methods[0] = methods[k];
+        keep = methods[k]; /* first, the others kept behind it for freeing */
+        methods[k] = methods[0];
+        methods[0] = keep;
         n_methods = 1;
     }
 
@@ -197,7 +200,7 @@ int main(int argc, char **argv)
         printf("%-22s %7.2f [%6.2f, %6.2f]   %7.2f [%6.2f, %6.2f]   %8ld %8ld %10.3g %10.3g\n", m->name, hot, hot_lo,
                hot_hi, st, st_lo, st_hi, hits, acc.disagreements, acc.err_median, acc.err_max);
         if (csv != NULL)
-            fprintf(csv, "%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%ld,%ld,%ld,%.6g,%.6g,%.17g,%s\n", m->name,
+            fprintf(csv, "%s,%s,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%ld,%ld,%ld,%.6g,%.6g,%.17g,\"%s\"\n", m->name,
                     m->single ? "float" : "double", hot, hot_lo, hot_hi, st, st_lo, st_hi, hits, acc.disagreements,
                     acc.both_hit, acc.err_median, acc.err_max, checksum, m->note);
         if (!strcmp(m->name, "cc_sweep")) {
@@ -229,5 +232,21 @@ int main(int argc, char **argv)
         printf("(no accuracy columns: built without the high-precision reference)\n");
     if (csv != NULL)
         fclose(csv);
+    for (k = 0; k < n_methods; k++) {
+        free(times[k]);
+        free(times_hot[k]);
+        free(hot_raw[k]);
+    }
+    for (k = 0; k < n_all; k++) {
+        free(methods[k].t);
+        free(methods[k].code);
+    }
+    free(t_ref);
+    free(t_reff);
+    free(lo_ref);
+    free(lo_reff);
+    free(code_ref);
+    free(code_reff);
+    bench_pair_data_free(&d);
     return 0;
 }

@@ -16,6 +16,17 @@ void bench_pair_data_init(bench_pair_data *d, size_t n)
         d->col[k] = bench_alloc(n * sizeof(double));
 }
 
+void bench_pair_data_free(bench_pair_data *d)
+{
+    int k;
+    free(d->a);
+    free(d->b);
+    free(d->af);
+    free(d->bf);
+    for (k = 0; k < 10; k++)
+        free(d->col[k]);
+}
+
 static cc_circlef to_float(const cc_circle *c)
 {
     cc_circlef f;

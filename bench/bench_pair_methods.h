@@ -34,6 +34,7 @@ typedef struct bench_method {
 } bench_method;
 
 void bench_pair_data_init(bench_pair_data *d, size_t n);
+void bench_pair_data_free(bench_pair_data *d);
 /* fills af, bf and the columns from a, b */
 void bench_pair_data_derive(const bench_pair_data *d);
 /* the methods available in this build, with output arrays for pairs pairs; returns how many */
