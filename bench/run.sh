@@ -7,7 +7,8 @@
 # docs/BENCHMARKS.md with its plots (docs/bench_*.png).
 # --quick (under a minute once built): small sizes, prints the headline `figure NAME VALUE`
 # lines only, writes nothing in docs/.
-# Environment: BENCH_BUILD (build folder, default build-bench), CC_JOBS (default 2).
+# Environment: BENCH_BUILD (build folder, default build-bench), CC_JOBS (default 2),
+# BENCH_COMMIT (the commit named on the page, when the tree is not a git checkout).
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -66,7 +67,7 @@ mkdir -p "$out"
   echo "cpu: $(grep -m1 'model name' /proc/cpuinfo 2>/dev/null | cut -d: -f2 | sed 's/^ //') ($(nproc) cores)"
   echo "os: $(uname -sr)"
   echo "compiler: $(${CC:-cc} --version | head -1)"
-  echo "commit: $(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)"
+  echo "commit: ${BENCH_COMMIT:-$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)}"
   echo "load: $(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)"
 } >"$out/machine.txt"
 
