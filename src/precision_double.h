@@ -1,5 +1,5 @@
 /* Binds the precision-generic names used by the *.inc templates to double. Included by
- * instantiate.h only; precision_end.h undoes it. */
+ * pair_double.c and sweep_many.c, before the templates. */
 #define CC_R double
 #define CC_V cc_vec2
 #define CC_CIRCLE cc_circle

@@ -1,4 +1,5 @@
-/* Undoes precision_double.h / precision_float.h so that the next precision can be bound. */
+/* Undoes precision_double.h / precision_float.h: a world source that borrows the double helpers
+ * ends with it, so that nothing of the templates' vocabulary leaks into the rest of the file. */
 #undef CC_R
 #undef CC_V
 #undef CC_CIRCLE

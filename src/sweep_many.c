@@ -5,7 +5,6 @@
 #include "precision_double.h"
 #include "helpers.inc"
 #include "solver.inc"
-#include "precision_end.h"
 
 static int cc__columns_ok(const cc_circle_soa *c)
 {

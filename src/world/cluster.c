@@ -45,7 +45,7 @@ typedef struct cc__scratch {
     double *z;       /* nc: LCP trial point */
     double *w;       /* nc: LCP residual */
     double *W;       /* nc * nc: Delassus matrix of the solve set */
-    double *L;       /* nc * nc: Cholesky factor of the passive block */
+    double *L;       /* nc * nc: LDL^T factors of the passive block */
     int *set;        /* nc: contact indices of the solve set */
     int *passive;    /* nc: positions (in the set) of the passive unknowns, in entry order */
     unsigned char *in_passive; /* nc */
@@ -191,51 +191,49 @@ static double cc__speed_scale(const double *v, int nb)
 
 /* ---- the LCP: Lawson-Hanson's active-set method on the Delassus form ---------------------- */
 
-/* Rows from..np-1 of the Cholesky factor L of the passive block W_PP (row-major, stride n);
- * rows before `from` are kept: row i depends only on the rows above it, so appending a contact
- * costs one row and removing one recomputes only the rows below it. Returns 0 when a pivot is
- * not clearly positive: the column adds no direction the others do not span. */
-static int cc__cholesky_rows(const double *W, int n, const int *passive, int np, int from, double *L)
+/* Rows from..np-1 of the LDL^T factorization of the passive block W_PP (unit lower L in the
+ * strict lower triangle, D on the diagonal; row-major, stride n); rows before `from` are kept:
+ * row i depends only on the rows above it, so appending a contact costs one row and removing
+ * one recomputes only the rows below it. No square roots: a lone contact gets z = -b / W with a
+ * single rounding, as in the pair response. Returns 0 when a pivot is not clearly positive: the
+ * column adds no direction the others do not span. */
+static int cc__ldl_rows(const double *W, int n, const int *passive, int np, int from, double *L)
 {
     int i, j, k;
     for (i = from; i < np; ++i) {
-        for (j = 0; j <= i; ++j) {
+        double d = W[passive[i] * n + passive[i]];
+        for (j = 0; j < i; ++j) {
             double s = W[passive[i] * n + passive[j]];
             for (k = 0; k < j; ++k)
-                s -= L[i * n + k] * L[j * n + k];
-            if (i == j) {
-                double d = W[passive[i] * n + passive[i]];
-                if (!(s > CC__CLUSTER_PIVOT_TOL * d))
-                    return 0;
-                L[i * n + i] = sqrt(s);
-            } else {
-                L[i * n + j] = s / L[j * n + j];
-            }
+                s -= L[i * n + k] * L[j * n + k] * L[k * n + k];
+            L[i * n + j] = s / L[j * n + j];
+            d -= L[i * n + j] * L[i * n + j] * L[j * n + j];
         }
+        if (!(d > CC__CLUSTER_PIVOT_TOL * W[passive[i] * n + passive[i]]))
+            return 0;
+        L[i * n + i] = d;
     }
     return 1;
 }
 
-/* z_P = -W_PP^-1 b_P with the factor L; z elsewhere 0. */
-static void cc__cholesky_solve(const double *L, int n, const int *passive, int np, const double *b,
-                               double *z, int m)
+/* z_P = -W_PP^-1 b_P with the factors; z elsewhere 0. */
+static void cc__ldl_solve(const double *L, int n, const int *passive, int np, const double *b, double *z,
+                          int m)
 {
     int i, k;
     for (i = 0; i < m; ++i)
         z[i] = 0.0;
-    /* forward: L y = -b_P, y kept in z[passive[i]] */
-    for (i = 0; i < np; ++i) {
+    for (i = 0; i < np; ++i) { /* L y = -b_P */
         double s = -b[passive[i]];
         for (k = 0; k < i; ++k)
             s -= L[i * n + k] * z[passive[k]];
-        z[passive[i]] = s / L[i * n + i];
+        z[passive[i]] = s;
     }
-    /* backward: L^T x = y */
-    for (i = np - 1; i >= 0; --i) {
-        double s = z[passive[i]];
+    for (i = np - 1; i >= 0; --i) { /* D L^T x = y */
+        double s = z[passive[i]] / L[i * n + i];
         for (k = i + 1; k < np; ++k)
             s -= L[k * n + i] * z[passive[k]];
-        z[passive[i]] = s / L[i * n + i];
+        z[passive[i]] = s;
     }
 }
 
@@ -250,7 +248,7 @@ static int cc__passive_remove(cc__scratch *s, int n, int np, int r)
     for (i = r; i + 1 < np; ++i)
         s->passive[i] = s->passive[i + 1];
     --np;
-    if (!cc__cholesky_rows(s->W, n, s->passive, np, r, s->L)) {
+    if (!cc__ldl_rows(s->W, n, s->passive, np, r, s->L)) {
         for (i = r; i < np; ++i) {
             s->in_passive[s->passive[i]] = 0;
             s->lam[s->passive[i]] = 0.0;
@@ -295,7 +293,7 @@ static int cc__lcp(cc__scratch *s, int m, double tol)
         }
         s->passive[np++] = j;
         s->in_passive[j] = 1;
-        if (!cc__cholesky_rows(s->W, n, s->passive, np, np - 1, s->L)) {
+        if (!cc__ldl_rows(s->W, n, s->passive, np, np - 1, s->L)) {
             s->in_passive[j] = 0;
             --np;
             s->blocked[j] = 1; /* redundant: the others already span its direction */
@@ -304,7 +302,7 @@ static int cc__lcp(cc__scratch *s, int m, double tol)
         for (;;) {
             double alpha = 1.0;
             int all_positive = 1, first = -1;
-            cc__cholesky_solve(s->L, n, s->passive, np, s->b, z, m);
+            cc__ldl_solve(s->L, n, s->passive, np, s->b, z, m);
             if (s->in_passive[j] && lam[j] == 0.0 && !(z[j] > 0.0)) {
                 /* in exact arithmetic an entering contact always gets a positive impulse;
                  * rounding can deny it that, and then it must not enter again */

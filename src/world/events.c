@@ -6,9 +6,18 @@
  * body's index in the heap, -1 when it is not queued. */
 #include "world_internal.h"
 
-static int cc__before(const cc__heap_entry *a, const cc__heap_entry *b)
+/* Without branches: which of two keys comes first is what a heap cannot predict. */
+static inline int cc__before(const cc__heap_entry *a, const cc__heap_entry *b)
 {
-    return a->key < b->key || (a->key == b->key && a->id < b->id);
+    return (a->key < b->key) | ((a->key == b->key) & (a->id < b->id));
+}
+
+/* The earliest of the four entries at c .. c + 3: two independent comparisons, then a third. */
+static inline int cc__min4(const cc__heap_entry *heap, int c)
+{
+    int a = cc__before(&heap[c + 1], &heap[c]) ? c + 1 : c;
+    int b = cc__before(&heap[c + 3], &heap[c + 2]) ? c + 3 : c + 2;
+    return cc__before(&heap[b], &heap[a]) ? b : a;
 }
 
 static void cc__sift_up(cc__heap_entry *heap, int32_t *hpos, int k, cc__heap_entry e)
@@ -28,12 +37,14 @@ static void cc__sift_up(cc__heap_entry *heap, int32_t *hpos, int k, cc__heap_ent
 static void cc__sift_down(cc__heap_entry *heap, int32_t *hpos, int n, int k, cc__heap_entry e)
 {
     for (;;) {
-        int c = 4 * k + 1, m = c, q, end;
-        if (c >= n)
+        int c = 4 * k + 1, m = c, q;
+        if (c + 4 <= n)
+            m = cc__min4(heap, c);
+        else if (c >= n)
             break;
-        end = c + 4 < n ? c + 4 : n;
-        for (q = c + 1; q < end; q++)
-            m = cc__before(&heap[q], &heap[m]) ? q : m;
+        else
+            for (q = c + 1; q < n; q++)
+                m = cc__before(&heap[q], &heap[m]) ? q : m;
         if (!cc__before(&heap[m], &e))
             break;
         heap[k] = heap[m];

@@ -5,15 +5,20 @@
  * advanced (lazily) and predicted again. */
 #include "world_internal.h"
 
-/* Resolves the impact due now, then predicts again every body whose trajectory changed, and
- * body tc->a in any case (its event is spent). */
+/* Resolves the impact due now (with everything touching it: simultaneous.c), then predicts
+ * again every body whose trajectory changed, and body tc->a in any case (its event is spent). */
 static void cc__impact(cc_world *w, const cc__touch *tc)
 {
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
     int k, a_done = 0;
     (void)cc__world_resolve(w, tc, 1);
     while ((k = cc__world_take_touched(w)) >= 0) {
         a_done |= k == tc->a;
         cc__predict(w, k);
+        /* a body brought to rest predicts nothing, so whatever moves towards it must look again
+         * (a body following it along a chain would otherwise pass through it) */
+        if (B[k].vx == 0.0 && B[k].vy == 0.0)
+            cc__predict_neighbours(w, k);
     }
     if (!a_done)
         cc__predict(w, tc->a);

@@ -21,7 +21,7 @@ static cc_circle cc__as_circle(const cc_world *w, int id)
     return c;
 }
 
-static void cc__report(cc_world *w, int a, int b, int seg, const cc_contact *k, double impulse)
+void cc__world_report(cc_world *w, int a, int b, int seg, const cc_contact *k, double impulse)
 {
     cc_contact_event e;
     w->stats.collisions++;
@@ -43,14 +43,14 @@ static double cc__restitution_for(const cc_world *w, double approach)
     return approach < w->rest_speed ? 0.0 : w->restitution;
 }
 
-static void cc__overlap_seen(cc_world *w, double depth)
+void cc__world_overlap_seen(cc_world *w, double depth)
 {
     if (depth > w->stats.max_overlap)
         w->stats.max_overlap = depth;
 }
 
 /* Wall contact of circle c with segment s: normal from the centre to the nearest point. */
-static cc_contact cc__wall_contact(const cc_circle *c, const cc_segment *s)
+cc_contact cc__world_wall_contact(const cc_circle *c, const cc_segment *s)
 {
     cc_contact k;
     cc_vec2 q = cc_closest_point_on_segment(c->pos, s);
@@ -82,11 +82,11 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc)
         k.normal = cc__unit(d);
         k.depth = ca.radius + cb.radius - dist;
         k.point = cc__advance(ca.pos, k.normal, ca.radius - 0.5 * k.depth);
-        cc__overlap_seen(w, k.depth);
+        cc__world_overlap_seen(w, k.depth);
         approach = -cc__dot(cc__sub(cb.vel, ca.vel), k.normal);
         if (cc_respond(&ca, &cb, &k, cc__restitution_for(w, approach)) != CC_HIT)
             return 0;
-        cc__report(w, tc->a, tc->b, -1, &k,
+        cc__world_report(w, tc->a, tc->b, -1, &k,
                    isinf(ca.mass) ? cb.mass * cc__length(cc__sub(cb.vel, cc__v(bb->vx, bb->vy)))
                                   : ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy))));
         if (ca.vel.x != ba->vx || ca.vel.y != ba->vy) {
@@ -101,12 +101,12 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc)
         }
         return 1;
     }
-    k = cc__wall_contact(&ca, &CC__CARR(w, cc_segment, off_seg)[tc->segment]);
-    cc__overlap_seen(w, k.depth);
+    k = cc__world_wall_contact(&ca, &CC__CARR(w, cc_segment, off_seg)[tc->segment]);
+    cc__world_overlap_seen(w, k.depth);
     approach = cc__dot(ca.vel, k.normal);
     if (isinf(ca.mass) || cc_respond_segment(&ca, &k, cc__restitution_for(w, approach)) != CC_HIT)
         return 0;
-    cc__report(w, tc->a, -1, tc->segment, &k, ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy))));
+    cc__world_report(w, tc->a, -1, tc->segment, &k, ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy))));
     ba->vx = ca.vel.x;
     ba->vy = ca.vel.y;
     cc__world_mark(w, tc->a);
@@ -133,13 +133,22 @@ int cc__world_take_touched(cc_world *w)
     return id;
 }
 
-/* Pairwise, in the order given: the place where issue 5's simultaneous-impact model goes. */
-int cc__world_resolve(cc_world *w, const cc__touch *touch, int n)
+/* Pairwise, in the order given: modes without clusters, and impacts that touch nothing else. */
+int cc__world_resolve_pairwise(cc_world *w, const cc__touch *touch, int n)
 {
     int i, hits = 0;
     for (i = 0; i < n; i++)
         hits += cc__resolve_one(w, &touch[i]);
     return hits;
+}
+
+/* EXACT resolves each impact with everything touching it at that instant (simultaneous.c);
+ * SWEPT and DISCRETE, which do not keep positions current between impacts, pairwise. */
+int cc__world_resolve(cc_world *w, const cc__touch *touch, int n)
+{
+    if (w->clu_bodies > 0)
+        return cc__world_resolve_cluster(w, touch, n);
+    return cc__world_resolve_pairwise(w, touch, n);
 }
 
 int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
@@ -160,7 +169,7 @@ int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
             return 0;
         if (cc_detect_static(&ca, &cb, &k) != CC_OVERLAP)
             return 0;
-        cc__overlap_seen(w, k.depth);
+        cc__world_overlap_seen(w, k.depth);
         if (cc_separate(&ca, &cb) != CC_OVERLAP)
             return 0;
         if (ca.pos.x != ba->px || ca.pos.y != ba->py) {
@@ -179,10 +188,10 @@ int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
         cc_contact k;
         if (isinf(ca.mass))
             return 0;
-        k = cc__wall_contact(&ca, &CC__CARR(w, cc_segment, off_seg)[seg]);
+        k = cc__world_wall_contact(&ca, &CC__CARR(w, cc_segment, off_seg)[seg]);
         if (!(k.depth > 0.0))
             return 0;
-        cc__overlap_seen(w, k.depth);
+        cc__world_overlap_seen(w, k.depth);
         ba->px -= k.normal.x * k.depth;
         ba->py -= k.normal.y * k.depth;
         C[a].flags |= CC__MOVED;

@@ -8,6 +8,8 @@ list(APPEND CC_WORLD_SOURCES
   world/overlap.c   # overlaps made by the caller; the full rebuild
   world/sort.c      # storage in Morton order of the cells; ids <-> storage indices
   world/near.c      # what touches a circle now (for simultaneous-impact resolvers)
+  world/cluster.c   # the simultaneous-impact model (generalized reflections)
+  world/simultaneous.c # EXACT: gathers the cluster of an impact and resolves it with the model
   world/exact.c     # EXACT stepping
   world/swept.c     # SWEPT stepping
   world/discrete.c  # DISCRETE stepping

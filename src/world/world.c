@@ -72,7 +72,8 @@ static uint32_t cc__slots(int max_circles)
 static size_t cc__layout(const cc_world_def *d, cc_world *w)
 {
     size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
-    size_t offs[11], sizes[11];
+    size_t offs[12], sizes[12];
+    int clu_b, clu_c;
     int k;
     sizes[0] = n * sizeof(cc__body);
     sizes[1] = n * sizeof(cc__event);
@@ -85,7 +86,8 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[8] = (size_t)d->max_segments * sizeof(cc_segment);
     sizes[9] = n * sizeof(int32_t);  /* id -> index */
     sizes[10] = n * sizeof(int32_t); /* index -> id */
-    for (k = 0; k < 11; k++) {
+    sizes[11] = cc__cluster_block(d->max_circles, d->mode, &clu_b, &clu_c); /* EXACT's clusters */
+    for (k = 0; k < 12; k++) {
         offs[k] = off;
         off += cc__align16(sizes[k]);
     }
@@ -101,6 +103,9 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_seg = offs[8];
         w->off_id2idx = offs[9];
         w->off_idx2id = offs[10];
+        w->off_clu = offs[11];
+        w->clu_bodies = clu_b;
+        w->clu_contacts = clu_c;
     }
     return off;
 }

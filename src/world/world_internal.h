@@ -97,6 +97,8 @@ struct cc_world {
     /* byte offsets from the header to the arrays */
     size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_free, off_touched, off_slot, off_seg;
     size_t off_id2idx, off_idx2id; /* a circle's id <-> its storage index (see sort.c) */
+    size_t off_clu;                /* EXACT: the simultaneous-impact cluster (simultaneous.c) */
+    int clu_bodies, clu_contacts;  /* its capacities; 0 when the world has none */
 };
 
 #define CC__WORLD_MAGIC 0x63637731u /* "ccw1" */
@@ -185,6 +187,21 @@ typedef void (*cc__touch_visit)(void *ctx, int j, int seg);
  * their radius sum + tol, and visit(ctx, -1, s) for every wall s within k's radius + tol.
  * Indices are storage indices. Returns the number of visits. */
 int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit visit, void *ctx);
+
+/* ---- simultaneous.c: clusters of impacts at one instant (issue 5, docs/SIMULTANEOUS.md) ---- */
+/* Cluster capacities for a world (0 and 0 when its mode gathers no clusters) and the bytes of
+ * its cluster block. */
+size_t cc__cluster_block(int max_circles, int mode, int *bodies, int *contacts);
+/* Resolves the impact(s) touch[0..n) due now together with every body touching them now
+ * (transitively, through movable bodies) and the walls those touch, by the simultaneous-impact
+ * model. When nothing else touches, this is cc__world_resolve_pairwise. Same contract as
+ * cc__world_resolve. */
+int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n);
+/* resolve.c's pairwise resolution, and the helpers the cluster path shares with it */
+int cc__world_resolve_pairwise(cc_world *w, const cc__touch *touch, int n);
+void cc__world_report(cc_world *w, int a, int b, int seg, const cc_contact *k, double impulse);
+void cc__world_overlap_seen(cc_world *w, double depth);
+cc_contact cc__world_wall_contact(const cc_circle *c, const cc_segment *s);
 
 /* ---- sort.c: storage in space-filling-curve order ---- */
 /* Inside the library a circle is named by its storage index; the API's ids map to indices
