@@ -78,7 +78,7 @@ configure() {
   local gen=()
   if [ ! -f "$dir/CMakeCache.txt" ] && command -v ninja >/dev/null; then gen=(-G Ninja); fi
   cmake -S "$root" -B "$dir" "${gen[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCC_WERROR=ON \
-    -DCC_REQUIRE_BOX2D=ON -DCC_BUILD_TESTS=ON -DCC_BUILD_DEMO=ON -DCC_BUILD_BENCH=ON \
+    -DCC_REQUIRE_BOX2D=ON -DCC_REQUIRE_MPFR=ON -DCC_BUILD_TESTS=ON -DCC_BUILD_DEMO=ON -DCC_BUILD_BENCH=ON \
     -DCMAKE_PREFIX_PATH="$box2d_prefix" "$@"
 }
 
