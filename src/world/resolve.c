@@ -1,7 +1,7 @@
 /* Contact resolution: every impulse the world applies goes through cc__world_resolve, which
- * receives all the contacts of one instant (so that a simultaneous-impact model can replace
- * the pairwise order used here; see issue 5), and every push-apart of an overlap goes through
- * cc__world_unoverlap. Both use the public pair functions. */
+ * hands EXACT's impacts to the simultaneous-impact path (simultaneous.c: the impact with
+ * everything touching it at that instant) and resolves the rest pairwise here, with the public
+ * pair functions; every push-apart of an overlap goes through cc__world_unoverlap. */
 #include "world_internal.h"
 
 #include "precision_double.h"
