@@ -44,8 +44,9 @@ typedef struct cc__scratch {
     double *lam;     /* nc: LCP unknowns */
     double *z;       /* nc: LCP trial point */
     double *w;       /* nc: LCP residual */
-    double *W;       /* nc * nc: Delassus matrix of the solve set */
-    double *L;       /* nc * nc: LDL^T factors of the passive block */
+    double *L;       /* nc (nc + 1) / 2: LDL^T factors of the passive block, packed rows */
+    const cc__cluster_body *bodies;       /* the cluster, for the Delassus entries */
+    const cc__cluster_contact *contacts;
     int *set;        /* nc: contact indices of the solve set */
     int *passive;    /* nc: positions (in the set) of the passive unknowns, in entry order */
     unsigned char *in_passive; /* nc */
@@ -61,12 +62,12 @@ size_t cc__cluster_scratch_size(int bodies, int contacts)
         return 0;
     nb = (size_t)bodies;
     nc = (size_t)contacts;
-    /* 2 * nc^2 + 6 * nc + 2 * nb doubles, then 2 * nc ints and 2 * nc bytes */
+    /* nc (nc + 1) / 2 + 6 nc + 2 nb doubles, then 2 nc ints and 2 nc bytes */
     if (nc > 0 && nc > (SIZE_MAX / 64u) / nc)
         return 0;
     if (nb > SIZE_MAX / 64u)
         return 0;
-    doubles = 2u * nc * nc + 6u * nc + 2u * nb;
+    doubles = nc * (nc + 1u) / 2u + 6u * nc + 2u * nb;
     if (doubles > SIZE_MAX / 16u)
         return 0;
     bytes = cc__align16(doubles * sizeof(double)) + cc__align16(2u * nc * sizeof(int)) +
@@ -88,9 +89,8 @@ static void cc__scratch_carve(cc__scratch *s, void *memory, int nb, int nc)
     s->lam = s->b + n;
     s->z = s->lam + n;
     s->w = s->z + n;
-    s->W = s->w + n;
-    s->L = s->W + n * n;
-    p += cc__align16((2u * n * n + 6u * n + 2u * m) * sizeof(double));
+    s->L = s->w + n;
+    p += cc__align16((n * (n + 1u) / 2u + 6u * n + 2u * m) * sizeof(double));
     s->set = (int *)(void *)p;
     s->passive = s->set + n;
     p += cc__align16(2u * n * sizeof(int));
@@ -163,6 +163,16 @@ static double cc__delassus(const cc__cluster_body *bodies, const cc__cluster_con
     return s * (k->normal.x * l->normal.x + k->normal.y * l->normal.y);
 }
 
+/* Entry (i, j) of the Delassus matrix of the solve set, computed when needed (an O(1) formula),
+ * so that the scratch holds only the factors. */
+static double cc__W(const cc__scratch *s, int i, int j)
+{
+    return cc__delassus(s->bodies, &s->contacts[s->set[i]], &s->contacts[s->set[j]]);
+}
+
+/* Packed lower triangle: row i starts at i (i + 1) / 2. */
+#define CC__TRI(i, j) ((size_t)(i) * (size_t)((i) + 1) / 2u + (size_t)(j))
+
 /* v += M^-1 n_k * impulse */
 static void cc__push(const cc__cluster_body *bodies, const cc__cluster_contact *k, double impulse,
                      double *v)
@@ -197,28 +207,29 @@ static double cc__speed_scale(const double *v, int nb)
  * one recomputes only the rows below it. No square roots: a lone contact gets z = -b / W with a
  * single rounding, as in the pair response. Returns 0 when a pivot is not clearly positive: the
  * column adds no direction the others do not span. */
-static int cc__ldl_rows(const double *W, int n, const int *passive, int np, int from, double *L)
+static int cc__ldl_rows(const cc__scratch *s, const int *passive, int np, int from, double *L)
 {
     int i, j, k;
     for (i = from; i < np; ++i) {
-        double d = W[passive[i] * n + passive[i]];
+        double *Li = L + CC__TRI(i, 0);
+        double w_ii = cc__W(s, passive[i], passive[i]), d = w_ii;
         for (j = 0; j < i; ++j) {
-            double s = W[passive[i] * n + passive[j]];
+            const double *Lj = L + CC__TRI(j, 0);
+            double v = cc__W(s, passive[i], passive[j]);
             for (k = 0; k < j; ++k)
-                s -= L[i * n + k] * L[j * n + k] * L[k * n + k];
-            L[i * n + j] = s / L[j * n + j];
-            d -= L[i * n + j] * L[i * n + j] * L[j * n + j];
+                v -= Li[k] * Lj[k] * L[CC__TRI(k, k)];
+            Li[j] = v / Lj[j];
+            d -= Li[j] * Li[j] * Lj[j];
         }
-        if (!(d > CC__CLUSTER_PIVOT_TOL * W[passive[i] * n + passive[i]]))
+        if (!(d > CC__CLUSTER_PIVOT_TOL * w_ii))
             return 0;
-        L[i * n + i] = d;
+        Li[i] = d;
     }
     return 1;
 }
 
 /* z_P = -W_PP^-1 b_P with the factors; z elsewhere 0. */
-static void cc__ldl_solve(const double *L, int n, const int *passive, int np, const double *b, double *z,
-                          int m)
+static void cc__ldl_solve(const double *L, const int *passive, int np, const double *b, double *z, int m)
 {
     int i, k;
     for (i = 0; i < m; ++i)
@@ -226,13 +237,13 @@ static void cc__ldl_solve(const double *L, int n, const int *passive, int np, co
     for (i = 0; i < np; ++i) { /* L y = -b_P */
         double s = -b[passive[i]];
         for (k = 0; k < i; ++k)
-            s -= L[i * n + k] * z[passive[k]];
+            s -= L[CC__TRI(i, k)] * z[passive[k]];
         z[passive[i]] = s;
     }
     for (i = np - 1; i >= 0; --i) { /* D L^T x = y */
-        double s = z[passive[i]] / L[i * n + i];
+        double s = z[passive[i]] / L[CC__TRI(i, i)];
         for (k = i + 1; k < np; ++k)
-            s -= L[k * n + i] * z[passive[k]];
+            s -= L[CC__TRI(k, i)] * z[passive[k]];
         z[passive[i]] = s;
     }
 }
@@ -241,14 +252,14 @@ static void cc__ldl_solve(const double *L, int n, const int *passive, int np, co
  * from a positive definite block leaves it positive definite, so this cannot fail in exact
  * arithmetic; should rounding make it fail, the remaining rows are dropped too (returns the new
  * count, the unknowns dropped set to 0). */
-static int cc__passive_remove(cc__scratch *s, int n, int np, int r)
+static int cc__passive_remove(cc__scratch *s, int np, int r)
 {
     int i;
     s->in_passive[s->passive[r]] = 0;
     for (i = r; i + 1 < np; ++i)
         s->passive[i] = s->passive[i + 1];
     --np;
-    if (!cc__ldl_rows(s->W, n, s->passive, np, r, s->L)) {
+    if (!cc__ldl_rows(s, s->passive, np, r, s->L)) {
         for (i = r; i < np; ++i) {
             s->in_passive[s->passive[i]] = 0;
             s->lam[s->passive[i]] = 0.0;
@@ -263,7 +274,6 @@ static int cc__passive_remove(cc__scratch *s, int n, int np, int r)
  * approaching (returns 1: jammed) or the pivot cap is reached (returns 2). */
 static int cc__lcp(cc__scratch *s, int m, double tol)
 {
-    const int n = m;
     int np = 0, outer, i, k, status = 0;
     double *lam = s->lam, *z = s->z, *w = s->w;
     for (i = 0; i < m; ++i) {
@@ -277,7 +287,7 @@ static int cc__lcp(cc__scratch *s, int m, double tol)
         for (i = 0; i < m; ++i) {
             double g = s->b[i];
             for (k = 0; k < np; ++k)
-                g += s->W[i * n + s->passive[k]] * lam[s->passive[k]];
+                g += cc__W(s, i, s->passive[k]) * lam[s->passive[k]];
             w[i] = g;
         }
         for (i = 0; i < m; ++i)
@@ -293,7 +303,7 @@ static int cc__lcp(cc__scratch *s, int m, double tol)
         }
         s->passive[np++] = j;
         s->in_passive[j] = 1;
-        if (!cc__ldl_rows(s->W, n, s->passive, np, np - 1, s->L)) {
+        if (!cc__ldl_rows(s, s->passive, np, np - 1, s->L)) {
             s->in_passive[j] = 0;
             --np;
             s->blocked[j] = 1; /* redundant: the others already span its direction */
@@ -302,13 +312,13 @@ static int cc__lcp(cc__scratch *s, int m, double tol)
         for (;;) {
             double alpha = 1.0;
             int all_positive = 1, first = -1;
-            cc__ldl_solve(s->L, n, s->passive, np, s->b, z, m);
+            cc__ldl_solve(s->L, s->passive, np, s->b, z, m);
             if (s->in_passive[j] && lam[j] == 0.0 && !(z[j] > 0.0)) {
                 /* in exact arithmetic an entering contact always gets a positive impulse;
                  * rounding can deny it that, and then it must not enter again */
                 for (k = 0; s->passive[k] != j; ++k) {
                 }
-                np = cc__passive_remove(s, n, np, k);
+                np = cc__passive_remove(s, np, k);
                 s->blocked[j] = 1;
                 break;
             }
@@ -340,7 +350,7 @@ static int cc__lcp(cc__scratch *s, int m, double tol)
             for (k = 0; k < np;) {
                 if (!(lam[s->passive[k]] > 0.0)) {
                     lam[s->passive[k]] = 0.0;
-                    np = cc__passive_remove(s, n, np, k);
+                    np = cc__passive_remove(s, np, k);
                 } else {
                     ++k;
                 }
@@ -363,12 +373,10 @@ static int cc__project(const cc__cluster_body *bodies, const cc__cluster_contact
                        cc__scratch *s, int m, double tol, double scale, double *impulses,
                        int apply_v)
 {
-    int i, j, status;
+    int i, status;
     for (i = 0; i < m; ++i) {
         const cc__cluster_contact *k = &contacts[s->set[i]];
         s->b[i] = cc__approach(k, s->v);
-        for (j = 0; j < m; ++j)
-            s->W[i * m + j] = cc__delassus(bodies, k, &contacts[s->set[j]]);
     }
     status = cc__lcp(s, m, tol);
     for (i = 0; i < m; ++i) {
@@ -407,6 +415,8 @@ int cc__cluster_resolve(cc__cluster_body *bodies, int nbodies, cc__cluster_conta
     if (scratch == NULL || need == 0 || scratch_bytes < need)
         return CC_ERR_MEMORY;
     cc__scratch_carve(&s, scratch, nbodies, ncontacts);
+    s.bodies = bodies;
+    s.contacts = contacts;
     memset(&rep, 0, sizeof rep);
 
     cc__load_velocities(bodies, nbodies, s.v);
