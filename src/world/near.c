@@ -47,9 +47,15 @@ int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit vis
             }
     }
     for (s = 0; s < w->n_segments; s++) {
-        cc_vec2 p = cc__v(cc__bx(&B[k], w->now), cc__by(&B[k], w->now));
-        cc_vec2 q = cc_closest_point_on_segment(p, &seg[s]);
-        if (cc__length(cc__sub(q, p)) <= B[k].r + tol) {
+        cc_vec2 p = cc__v(cc__bx(&B[k], w->now), cc__by(&B[k], w->now)), q;
+        double reach = B[k].r + tol;
+        const cc_segment *g = &seg[s];
+        /* most walls are far: the segment's box grown by the reach rules them out cheaply */
+        if (p.x + reach < (g->a.x < g->b.x ? g->a.x : g->b.x) || p.x - reach > (g->a.x > g->b.x ? g->a.x : g->b.x) ||
+            p.y + reach < (g->a.y < g->b.y ? g->a.y : g->b.y) || p.y - reach > (g->a.y > g->b.y ? g->a.y : g->b.y))
+            continue;
+        q = cc_closest_point_on_segment(p, g);
+        if (cc__length(cc__sub(q, p)) <= reach) {
             visit(ctx, -1, s);
             n++;
         }
