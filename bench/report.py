@@ -55,7 +55,12 @@ def peers_table(text):
 
 def pareto_plot(matrix, path):
     scenes = list(dict.fromkeys(r["scene"] for r in matrix))
-    fig, axes = plt.subplots(1, len(scenes), figsize=(4 * len(scenes), 3.6), squeeze=False)
+    cols = 3
+    rows_n = (len(scenes) + cols - 1) // cols
+    fig, grid = plt.subplots(rows_n, cols, figsize=(4.2 * cols, 3.4 * rows_n), squeeze=False)
+    axes = [[ax for row in grid for ax in row]]
+    for ax in axes[0][len(scenes):]:
+        ax.set_visible(False)
     style = {"EXACT": ("o", "tab:green"), "SWEPT": ("s", "tab:blue"), "DISCRETE": ("^", "tab:red")}
     for ax, scene in zip(axes[0], scenes):
         for mode, (marker, color) in style.items():
@@ -206,7 +211,8 @@ def main():
           "contacts that the pre-step motion makes within a step but that end the step apart with "
           "unchanged velocities (they passed through); *escaped* = centres that left the table; "
           "*overlap* = deepest overlap after any step, in radii; *dE/E* = relative energy change over "
-          "the run; *error* = RMS distance of the final positions from EXACT at a step of 1/7680, in radii.")
+          "the run; *error* = RMS distance of the final positions from EXACT at a step of 1/7680, in radii "
+          "(the plot draws that reference itself, error 0, at 1e-16).")
         w("")
         w("![cost against error](bench_pareto.png)")
         w("")
@@ -221,8 +227,8 @@ def main():
         w("")
         head = read(os.path.join(res, "headline.txt")).strip()
         if head:
-            w("EXACT on the gas at N = 10000, phi = 0.3 (steps of 1/60 after a warm-up step; the world's own "
-              "counters per collision):")
+            w("EXACT on the gas at N = 10000, phi = 0.3 (steps of 1/60 after a warm-up of about half a collision "
+              "per circle; the world's own counters per collision, since its creation):")
             w("")
             w("```")
             w(head)
