@@ -187,7 +187,8 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           even into its own block, so a world may be copied (memcpy) to other 16-byte aligned
  *           memory of the same size and used from there. It keeps no pointer to the caller's
  *           defs, circles or segments (it copies them). About 160 bytes per circle (one 64-byte
- *           line of hot state, the predicted event, queue and grid entries) plus 32 per wall.
+ *           line of hot state, the predicted event, queue and grid entries) plus 32 per wall;
+ *           EXACT adds one block of at most 15 KB for simultaneous impacts (see below).
  * Ids       cc_world_add_circle returns the most recently removed id when there is one (removed
  *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid
  *           and names the same circle until it is removed; others are never renumbered.
@@ -240,8 +241,23 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           consistent at the time of the last event processed; the next cc_world_step
  *           continues from there. A body squeezed between an immovable circle moving towards
  *           a wall (an impossible scene) hits that cap at every call.
- * Simultaneous  Impacts at the same instant are processed one pair at a time, in a fixed
- *           order (issue 5 replaces this with a simultaneous-impact model).
+ * Simultaneous  In EXACT, an impact is resolved together with everything touching the two
+ *           bodies at that instant: circles and walls whose gap is below 2^-40 of the size of
+ *           the numbers involved (coordinates, radii, speeds times |world time|), found
+ *           transitively through movable circles (immovable ones take impulses, pass none on).
+ *           This also gathers impacts predicted for the same instant up to rounding. The
+ *           cluster is resolved at once by generalized reflections (Smith et al., "Reflections
+ *           on Simultaneous Impact", 2012): momentum kept, kinetic energy kept at restitution
+ *           1, mirror-symmetric scenes stay symmetric to rounding, an impact runs through a
+ *           chain of touching circles (Newton's cradle sends out exactly one ball), and the
+ *           outcome does not depend on the order in which circles were added. With restitution
+ *           e < 1 it is e times that plus 1 - e times the perfectly inelastic outcome; when no
+ *           contact approaches faster than rest_speed, the inelastic one. Each contact that
+ *           takes an impulse is one collision and one callback (its total impulse), all at
+ *           that instant. An impact touching nothing else is the ordinary pair impact. Up to
+ *           24 circles and 48 contacts per cluster; beyond, what is left approaching is
+ *           resolved right after. SWEPT and DISCRETE resolve impacts one pair at a time.
+ *           docs/SIMULTANEOUS.md has the model, its limits and the tolerances.
  * Immovable Circles of mass +INFINITY: obstacles that nothing moves. They may have a velocity
  *           (kinematic bodies): they then move and push others, but pass through other
  *           immovable circles and through walls.
