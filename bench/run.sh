@@ -44,7 +44,7 @@ bin=$build/bench
 
 if [ $quick = 1 ]; then
   # 2e5 pairs are enough for stable ratios; the reference is skipped (it is the slow part)
-  "$bin/bench_pair" --pairs 200000 --rounds 5 --no-reference | tee -a "$log" | grep '^figure '
+  "$bin/bench_pair" --pairs 200000 --rounds 9 --no-reference | tee -a "$log" | grep '^figure '
   "$bin/bench_world" headline --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_world" features --quick | tee -a "$log" | grep '^figure '
   echo "(details: $log)"
