@@ -7,25 +7,9 @@
 #include "world_internal.h"
 #include "world/cluster.h"
 
-static cc_vec2 cc__v(double x, double y)
-{
-    cc_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
-/* unit vector from a to b at world time now; (1, 0) for coincident centres, like cc_sweep */
-static cc_vec2 cc__centre_normal(const cc__body *a, const cc__body *b, double now)
-{
-    double dx = cc__bx(b, now) - cc__bx(a, now), dy = cc__by(b, now) - cc__by(a, now);
-    double d = sqrt(dx * dx + dy * dy);
-    return d > 0.0 ? cc__v(dx / d, dy / d) : cc__v(1.0, 0.0);
-}
-
 /* Capacities: a cluster holds up to CC__CLU_BODIES bodies (the 15-ball rack and its cue ball
  * take 16) and CC__CLU_CONTACTS contacts (the rack: 31); the solver's scratch grows as
- * 16 * contacts^2 bytes. Touching bodies beyond them are left out of the cluster: their
+ * 4 * contacts^2 bytes. Touching bodies beyond them are left out of the cluster: their
  * contacts, if approaching, are impacts due now and resolved right after. */
 #define CC__CLU_BODIES 24
 #define CC__CLU_CONTACTS 48
@@ -36,19 +20,49 @@ static cc_vec2 cc__centre_normal(const cc__body *a, const cc__body *b, double no
 #define CC__CLU_TOL 0x1p-40
 
 typedef struct cc__clu {
-    int nb, nc, full;
+    cc_world *w;
+    int nb, nc;
     int *id;                      /* storage indices of the bodies */
     cc__cluster_body *body;       /* their velocities and inverse masses */
     cc__cluster_contact *contact; /* a, b index into id[]; b = -1 for a wall */
     int *seg;                     /* a wall contact's segment, else -1 */
     void *scratch;
     size_t scratch_bytes;
-    cc_world *w;
-    int from; /* the body whose touching neighbours are being visited (position in id[]) */
+    int from;      /* the body whose touching neighbours are being visited (position in id[]) */
     double fx, fy; /* its position now */
 } cc__clu;
 
 static size_t cc__al16(size_t n) { return (n + 15u) & ~(size_t)15u; }
+
+static cc_vec2 cc__v(double x, double y)
+{
+    cc_vec2 v;
+    v.x = x;
+    v.y = y;
+    return v;
+}
+
+static double cc__inf_norm(double x, double y) { return fabs(x) > fabs(y) ? fabs(x) : fabs(y); }
+
+/* Unit vector from a to b at world time now; (1, 0) for coincident centres, like cc_sweep. */
+static cc_vec2 cc__centre_normal(const cc__body *a, const cc__body *b, double now)
+{
+    double dx = cc__bx(b, now) - cc__bx(a, now), dy = cc__by(b, now) - cc__by(a, now);
+    double d = sqrt(dx * dx + dy * dy);
+    return d > 0.0 ? cc__v(dx / d, dy / d) : cc__v(1.0, 0.0);
+}
+
+/* Contact of body k with wall s at world time now (resolve.c's rule for the normal). */
+static cc_contact cc__wall_now(const cc_world *w, int k, int s)
+{
+    const cc__body *b = &CC__CARR(w, cc__body, off_body)[k];
+    cc_circle c;
+    c.pos = cc__v(cc__bx(b, w->now), cc__by(b, w->now));
+    c.vel = cc__v(b->vx, b->vy);
+    c.radius = b->r;
+    c.mass = 1.0;
+    return cc__world_wall_contact(&c, &CC__CARR(w, cc_segment, off_seg)[s]);
+}
 
 size_t cc__cluster_block(int max_circles, int mode, int *bodies, int *contacts)
 {
@@ -80,11 +94,9 @@ static void cc__clu_carve(cc_world *w, cc__clu *c)
     p += cc__al16(nc * sizeof(int));
     c->scratch = p;
     c->scratch_bytes = cc__cluster_scratch_size(w->clu_bodies, w->clu_contacts);
-    c->nb = c->nc = c->full = 0;
+    c->nb = c->nc = 0;
     c->w = w;
 }
-
-static double cc__inf_norm(double x, double y) { return fabs(x) > fabs(y) ? fabs(x) : fabs(y); }
 
 /* Position of body k in the cluster (adding it when new and there is room), or -1. */
 static int cc__clu_body(cc__clu *c, int k)
@@ -95,29 +107,27 @@ static int cc__clu_body(cc__clu *c, int k)
     for (i = 0; i < c->nb; i++)
         if (c->id[i] == k)
             return i;
-    if (c->nb == c->w->clu_bodies) {
-        c->full = 1;
+    if (c->nb == c->w->clu_bodies)
         return -1;
-    }
     c->id[c->nb] = k;
-    c->body[c->nb].vel.x = B[k].vx;
-    c->body[c->nb].vel.y = B[k].vy;
+    c->body[c->nb].vel = cc__v(B[k].vx, B[k].vy);
     c->body[c->nb].inv_mass = isinf(m) ? 0.0 : 1.0 / m;
     return c->nb++;
 }
 
+/* Lists contact a-b (b = -1: wall seg) unless it is listed already (a seed, or found from the
+ * other body) or the cluster is full. */
 static void cc__clu_contact(cc__clu *c, int a, int b, int seg, cc_vec2 n)
 {
     cc__cluster_contact *k;
     int i;
-    for (i = 0; i < c->nc; i++) /* listed already (a seed, or found from the other side) */
-        if (c->seg[i] == seg &&
-            ((c->contact[i].a == a && c->contact[i].b == b) || (seg < 0 && c->contact[i].a == b && c->contact[i].b == a)))
+    for (i = 0; i < c->nc; i++) {
+        const cc__cluster_contact *q = &c->contact[i];
+        if (c->seg[i] == seg && ((q->a == a && q->b == b) || (seg < 0 && q->a == b && q->b == a)))
             return;
-    if (c->nc == c->w->clu_contacts) {
-        c->full = 1;
-        return;
     }
+    if (c->nc == c->w->clu_contacts)
+        return;
     k = &c->contact[c->nc];
     k->a = a;
     k->b = b;
@@ -126,101 +136,108 @@ static void cc__clu_contact(cc__clu *c, int a, int b, int seg, cc_vec2 n)
     c->seg[c->nc++] = seg;
 }
 
-/* The touching tolerance for body k (at (x, y) now) and a partner of radius r at (px, py)
- * moving at speed (vx, vy); a wall is a partner of radius 0 at rest near k. */
-static double cc__clu_tol(const cc_world *w, int k, double x, double y, double r, double px, double py,
-                          double vx, double vy)
+/* The touching tolerance of body k at (x, y) now and a partner of radius r at (px, py) moving
+ * at (vx, vy); a wall is a partner of radius 0 at rest at k's closest point. */
+static double cc__clu_tol(const cc_world *w, int k, double x, double y, double r, double px,
+                          double py, double vx, double vy)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[k];
-    return CC__CLU_TOL * (cc__inf_norm(x, y) + cc__inf_norm(px, py) + b->r + r +
-                          (cc__inf_norm(b->vx, b->vy) + cc__inf_norm(vx, vy)) * fabs(w->now));
+    double speeds = cc__inf_norm(b->vx, b->vy) + cc__inf_norm(vx, vy);
+    return CC__CLU_TOL *
+           (cc__inf_norm(x, y) + cc__inf_norm(px, py) + b->r + r + speeds * fabs(w->now));
 }
 
-/* near.c's visitor: circle j or wall s touches the body being expanded. */
+/* near.c's visitor: circle j or wall s is within the loose tolerance of the body expanded. */
 static void cc__clu_visit(void *ctx, int j, int s)
 {
     cc__clu *c = (cc__clu *)ctx;
     cc_world *w = c->w;
     const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     int k = c->id[c->from], i;
     if (j >= 0) {
         double jx = cc__bx(&B[j], w->now), jy = cc__by(&B[j], w->now);
-        double dx = jx - c->fx, dy = jy - c->fy, d = sqrt(dx * dx + dy * dy);
-        const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
+        double dx = jx - c->fx, dy = jy - c->fy, gap = sqrt(dx * dx + dy * dy) - (B[k].r + B[j].r);
         if (isinf(C[k].m) && isinf(C[j].m))
             return; /* immovable circles pass through each other */
-        if (d - (B[k].r + B[j].r) > cc__clu_tol(w, k, c->fx, c->fy, B[j].r, jx, jy, B[j].vx, B[j].vy))
+        if (gap > cc__clu_tol(w, k, c->fx, c->fy, B[j].r, jx, jy, B[j].vx, B[j].vy))
             return;
         i = cc__clu_body(c, j);
-        if (i < 0)
-            return;
-        cc__clu_contact(c, c->from, i, -1, d > 0.0 ? cc__v(dx / d, dy / d) : cc__v(1.0, 0.0));
+        if (i >= 0)
+            cc__clu_contact(c, c->from, i, -1, cc__centre_normal(&B[k], &B[j], w->now));
     } else {
-        cc_circle ci;
-        cc_contact kk;
-        const cc_segment *g = &CC__CARR(w, cc_segment, off_seg)[s];
-        if (isinf(CC__CARR(w, cc__cold, off_cold)[k].m))
-            return; /* an immovable circle passes through walls */
-        ci.pos = cc__v(c->fx, c->fy);
-        ci.vel = cc__v(B[k].vx, B[k].vy);
-        ci.radius = B[k].r;
-        ci.mass = 1.0;
-        kk = cc__world_wall_contact(&ci, g);
-        if (-kk.depth > cc__clu_tol(w, k, c->fx, c->fy, 0.0, kk.point.x, kk.point.y, 0.0, 0.0))
-            return;
-        cc__clu_contact(c, c->from, -1, s, kk.normal);
+        cc_contact kk = cc__wall_now(w, k, s);
+        if (-kk.depth <= cc__clu_tol(w, k, c->fx, c->fy, 0.0, kk.point.x, kk.point.y, 0.0, 0.0))
+            cc__clu_contact(c, c->from, -1, s, kk.normal);
     }
+}
+
+/* Grows the cluster breadth first through the bodies touching now. Immovable ones stop the
+ * spread: they take impulses but pass none on (and pass through walls). */
+static void cc__clu_gather(cc__clu *c)
+{
+    cc_world *w = c->w;
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
+    for (c->from = 0; c->from < c->nb; c->from++) {
+        int k = c->id[c->from], q;
+        double vmax = 0.0, rmax = w->cs, loose;
+        if (isinf(C[k].m))
+            continue;
+        c->fx = cc__bx(&B[k], w->now);
+        c->fy = cc__by(&B[k], w->now);
+        /* near.c takes one tolerance: a bound on every pair tolerance of this body (neighbours
+         * lie within a cell or two and are rarely faster than the cluster's fastest body) */
+        for (q = 0; q < c->nb; q++) {
+            double v = cc__inf_norm(c->body[q].vel.x, c->body[q].vel.y);
+            vmax = v > vmax ? v : vmax;
+            rmax = B[c->id[q]].r > rmax ? B[c->id[q]].r : rmax;
+        }
+        loose = 4.0 * CC__CLU_TOL *
+                (2.0 * cc__inf_norm(c->fx, c->fy) + 4.0 * rmax + 2.0 * vmax * fabs(w->now));
+        (void)cc__world_touching(w, k, loose, cc__clu_visit, c);
+    }
+}
+
+/* The world's own test of an impact: does touch t still approach? */
+static int cc__still_approaching(const cc_world *w, const cc__touch *t)
+{
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const cc__body *ba = &B[t->a];
+    double vn, speeds = fabs(ba->vx) + fabs(ba->vy);
+    cc_vec2 n;
+    if (t->b >= 0) {
+        const cc__body *bb = &B[t->b];
+        n = cc__centre_normal(ba, bb, w->now);
+        vn = (ba->vx - bb->vx) * n.x + (ba->vy - bb->vy) * n.y;
+        speeds += fabs(bb->vx) + fabs(bb->vy);
+    } else {
+        n = cc__wall_now(w, t->a, t->segment).normal;
+        vn = ba->vx * n.x + ba->vy * n.y;
+    }
+    return cc__approaching(w, vn, speeds);
 }
 
 int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
-    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     cc__clu c;
     cc__cluster_report rep;
-    double loose;
     int i, hits = 0;
     cc__clu_carve(w, &c);
     /* the impacts themselves first, whatever their gap */
     for (i = 0; i < n; i++) {
-        int a = cc__clu_body(&c, touch[i].a);
-        if (touch[i].b >= 0) {
-            int b = cc__clu_body(&c, touch[i].b);
-            if (a >= 0 && b >= 0)
-                cc__clu_contact(&c, a, b, -1, cc__centre_normal(&B[touch[i].a], &B[touch[i].b], w->now));
-        } else if (a >= 0) {
-            cc_circle ci;
-            ci.pos = cc__v(cc__bx(&B[touch[i].a], w->now), cc__by(&B[touch[i].a], w->now));
-            ci.vel = cc__v(B[touch[i].a].vx, B[touch[i].a].vy);
-            ci.radius = B[touch[i].a].r;
-            ci.mass = 1.0;
-            cc__clu_contact(&c, a, -1, touch[i].segment,
-                            cc__world_wall_contact(&ci, &CC__CARR(w, cc_segment, off_seg)[touch[i].segment]).normal);
-        }
-    }
-    /* breadth first through the bodies touching now; immovable ones stop the spread (they take
-     * impulses but pass none on) */
-    for (c.from = 0; c.from < c.nb; c.from++) {
-        int k = c.id[c.from];
-        if (isinf(C[k].m))
+        int a = cc__clu_body(&c, touch[i].a), b;
+        if (a < 0)
             continue;
-        c.fx = cc__bx(&B[k], w->now);
-        c.fy = cc__by(&B[k], w->now);
-        /* a bound on every pair tolerance of this body: neighbours lie within a cell or two and
-         * move no faster than the fastest body of the cluster so far */
-        {
-            double vmax = 0.0, rmax = 0.0;
-            int q;
-            for (q = 0; q < c.nb; q++) {
-                double v = cc__inf_norm(c.body[q].vel.x, c.body[q].vel.y);
-                vmax = v > vmax ? v : vmax;
-                rmax = B[c.id[q]].r > rmax ? B[c.id[q]].r : rmax;
-            }
-            loose = 4.0 * CC__CLU_TOL *
-                    (2.0 * cc__inf_norm(c.fx, c.fy) + 4.0 * (w->cs > rmax ? w->cs : rmax) + 2.0 * vmax * fabs(w->now));
+        if (touch[i].b < 0) {
+            cc_vec2 nw = cc__wall_now(w, touch[i].a, touch[i].segment).normal;
+            cc__clu_contact(&c, a, -1, touch[i].segment, nw);
+        } else if ((b = cc__clu_body(&c, touch[i].b)) >= 0) {
+            cc__clu_contact(&c, a, b, -1, cc__centre_normal(&B[touch[i].a], &B[touch[i].b], w->now));
         }
-        (void)cc__world_touching(w, k, loose, cc__clu_visit, &c);
     }
+    cc__clu_gather(&c);
     if (c.nc <= 1 && n == 1)
         return cc__world_resolve_pairwise(w, touch, n); /* nothing else touches: a pair impact */
     if (cc__cluster_resolve(c.body, c.nb, c.contact, c.nc, w->restitution, w->rest_speed, c.scratch,
@@ -241,58 +258,34 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
         const cc__cluster_contact *k = &c.contact[i];
         const cc__body *ba = &B[c.id[k->a]];
         cc_contact ev;
-        double depth;
         if (k->b >= 0) {
             const cc__body *bb = &B[c.id[k->b]];
-            double dx = cc__bx(bb, w->now) - cc__bx(ba, w->now), dy = cc__by(bb, w->now) - cc__by(ba, w->now);
-            depth = ba->r + bb->r - sqrt(dx * dx + dy * dy);
-            ev.point = cc__v(cc__bx(ba, w->now) + k->normal.x * (ba->r - 0.5 * depth),
-                             cc__by(ba, w->now) + k->normal.y * (ba->r - 0.5 * depth));
+            double ax = cc__bx(ba, w->now), ay = cc__by(ba, w->now);
+            double dx = cc__bx(bb, w->now) - ax, dy = cc__by(bb, w->now) - ay;
+            ev.depth = ba->r + bb->r - sqrt(dx * dx + dy * dy);
+            ev.point = cc__v(ax + k->normal.x * (ba->r - 0.5 * ev.depth),
+                             ay + k->normal.y * (ba->r - 0.5 * ev.depth));
         } else {
-            cc_circle ci;
-            ci.pos = cc__v(cc__bx(ba, w->now), cc__by(ba, w->now));
-            ci.vel = cc__v(ba->vx, ba->vy);
-            ci.radius = ba->r;
-            ci.mass = 1.0;
-            ev = cc__world_wall_contact(&ci, &CC__CARR(w, cc_segment, off_seg)[c.seg[i]]);
-            depth = ev.depth;
+            ev = cc__wall_now(w, c.id[k->a], c.seg[i]);
         }
-        cc__world_overlap_seen(w, depth);
+        cc__world_overlap_seen(w, ev.depth);
         if (!(k->impulse > 0.0))
             continue;
         ev.t = 0.0;
         ev.normal = k->normal;
-        ev.depth = depth;
         cc__world_report(w, c.id[k->a], k->b >= 0 ? c.id[k->b] : -1, c.seg[i], &ev, k->impulse);
         hits++;
     }
-    /* The event loop progresses because the impacts it hands in get resolved. The model calls a
+    /* The event loop moves on because the impacts it hands in get resolved. The model calls a
      * contact approaching relative to the cluster's fastest body, the world relative to the
      * pair's own speeds: an impact the world still sees approaching gets the pair impulse. */
     for (i = 0; i < n; i++) {
-        const cc__body *ba = &B[touch[i].a];
-        double vn, speeds = fabs(ba->vx) + fabs(ba->vy);
-        cc_vec2 nn;
-        if (touch[i].b >= 0) {
-            const cc__body *bb = &B[touch[i].b];
-            nn = cc__centre_normal(ba, bb, w->now);
-            vn = (ba->vx - bb->vx) * nn.x + (ba->vy - bb->vy) * nn.y;
-            speeds += fabs(bb->vx) + fabs(bb->vy);
-        } else {
-            cc_circle ci;
-            ci.pos = cc__v(cc__bx(ba, w->now), cc__by(ba, w->now));
-            ci.vel = cc__v(ba->vx, ba->vy);
-            ci.radius = ba->r;
-            ci.mass = 1.0;
-            nn = cc__world_wall_contact(&ci, &CC__CARR(w, cc_segment, off_seg)[touch[i].segment]).normal;
-            vn = ba->vx * nn.x + ba->vy * nn.y;
-        }
-        if (cc__approaching(w, vn, speeds)) {
-            cc__advance_body(&B[touch[i].a], w->now);
-            if (touch[i].b >= 0)
-                cc__advance_body(&B[touch[i].b], w->now);
-            hits += cc__world_resolve_pairwise(w, &touch[i], 1);
-        }
+        if (!cc__still_approaching(w, &touch[i]))
+            continue;
+        cc__advance_body(&B[touch[i].a], w->now);
+        if (touch[i].b >= 0)
+            cc__advance_body(&B[touch[i].b], w->now);
+        hits += cc__world_resolve_pairwise(w, &touch[i], 1);
     }
     return hits;
 }
