@@ -6,10 +6,9 @@
  * body's index in the heap, -1 when it is not queued. */
 #include "world_internal.h"
 
-/* Without branches: which of two keys comes first is what a heap cannot predict. */
 static inline int cc__before(const cc__heap_entry *a, const cc__heap_entry *b)
 {
-    return (a->key < b->key) | ((a->key == b->key) & (a->id < b->id));
+    return a->key < b->key || (a->key == b->key && a->id < b->id);
 }
 
 /* The earliest of the four entries at c .. c + 3: two independent comparisons, then a third. */
@@ -34,10 +33,30 @@ static void cc__sift_up(cc__heap_entry *heap, int32_t *hpos, int k, cc__heap_ent
     hpos[e.id] = k;
 }
 
+/* The children of the four entries at c .. c + 3 are the 16 entries from 4c + 1: asked for
+ * before the four are compared, they arrive while the comparison runs. Only for a heap larger
+ * than the caches, which then misses at every level; a small one would pay for nothing. */
+#define CC__HEAP_PREFETCH_MIN 32768
+#if defined(__GNUC__)
+#define CC__PREFETCH_CHILDREN(heap, c, n)                                                                          \
+    do {                                                                                                           \
+        if ((n) >= CC__HEAP_PREFETCH_MIN && 4 * (c) + 1 < (n)) {                                                   \
+            const cc__heap_entry *g_ = &(heap)[4 * (c) + 1];                                                       \
+            __builtin_prefetch(g_);                                                                                \
+            __builtin_prefetch(g_ + 4);                                                                            \
+            __builtin_prefetch(g_ + 8);                                                                            \
+            __builtin_prefetch(g_ + 12);                                                                           \
+        }                                                                                                          \
+    } while (0)
+#else
+#define CC__PREFETCH_CHILDREN(heap, c, n) ((void)0)
+#endif
+
 static void cc__sift_down(cc__heap_entry *heap, int32_t *hpos, int n, int k, cc__heap_entry e)
 {
     for (;;) {
         int c = 4 * k + 1, m = c, q;
+        CC__PREFETCH_CHILDREN(heap, c, n);
         if (c + 4 <= n)
             m = cc__min4(heap, c);
         else if (c >= n)

@@ -9,12 +9,12 @@
 #include "helpers.inc"
 #include "precision_end.h"
 
-static int cc__touching_circle(const cc_world *w, int k, int j, double tol)
+/* Circle j within tol of the circle of radius kr at (kx, ky) at w->now. */
+static int cc__touching_circle(const cc_world *w, const cc__body *bj, double kx, double ky, double kr, double tol)
 {
-    const cc__body *B = CC__CARR(w, cc__body, off_body);
-    double dx = cc__bx(&B[j], w->now) - cc__bx(&B[k], w->now);
-    double dy = cc__by(&B[j], w->now) - cc__by(&B[k], w->now);
-    double R = B[k].r + B[j].r + tol;
+    double dx = cc__bx(bj, w->now) - kx;
+    double dy = cc__by(bj, w->now) - ky;
+    double R = kr + bj->r + tol;
     return dx * dx + dy * dy <= R * R;
 }
 
@@ -23,36 +23,47 @@ int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit vis
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
+    const double kx = cc__bx(&B[k], w->now), ky = cc__by(&B[k], w->now), kr = B[k].r, reach = kr + tol;
     int j, s, n = 0;
     if (w->mode != CC_MODE_EXACT || w->dirty || !w->use_grid || (C[k].flags & CC__LARGE)) {
         for (j = 0; j < w->id_end; j++)
-            if (j != k && (C[j].flags & CC__ALIVE) && cc__touching_circle(w, k, j, tol)) {
+            if (j != k && (C[j].flags & CC__ALIVE) && cc__touching_circle(w, &B[j], kx, ky, kr, tol)) {
                 visit(ctx, j, -1);
                 n++;
             }
     } else {
+        /* the 3 x 3 cells row by row; within a tile (cc__grid_slot) a row's slots are consecutive and
+         * rows are a tile's width apart */
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-        int32_t x, y;
-        for (y = B[k].cy - 1; y <= B[k].cy + 1; y++)
-            for (x = B[k].cx - 1; x <= B[k].cx + 1; x++)
-                for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
-                    if (B[j].cx == x && B[j].cy == y && j != k && cc__touching_circle(w, k, j, tol)) {
+        const uint32_t mx = (1u << w->tile_bits_x) - 1u, my = (1u << w->tile_bits_y) - 1u, mask = w->slot_mask;
+        const uint32_t row = 1u << w->tile_bits_x;
+        int32_t x, y, x0 = B[k].cx - 1, y0 = B[k].cy - 1;
+        uint32_t s_row = cc__grid_slot(w, x0, y0), t;
+        for (y = y0; y < y0 + 3; y++) {
+            if (y != y0)
+                s_row = ((uint32_t)y & my) ? (s_row + row) & mask : cc__grid_slot(w, x0, y);
+            for (x = x0, t = s_row; x < x0 + 3; x++) {
+                if (x != x0)
+                    t = ((uint32_t)x & mx) ? (t + 1u) & mask : cc__grid_slot(w, x, y);
+                for (j = slot[t]; j >= 0; j = B[j].next)
+                    if (B[j].cx == x && B[j].cy == y && j != k && cc__touching_circle(w, &B[j], kx, ky, kr, tol)) {
                         visit(ctx, j, -1);
                         n++;
                     }
+            }
+        }
         for (j = w->large_head; j >= 0; j = B[j].next)
-            if (j != k && cc__touching_circle(w, k, j, tol)) {
+            if (j != k && cc__touching_circle(w, &B[j], kx, ky, kr, tol)) {
                 visit(ctx, j, -1);
                 n++;
             }
     }
     for (s = 0; s < w->n_segments; s++) {
-        cc_vec2 p = cc__v(cc__bx(&B[k], w->now), cc__by(&B[k], w->now)), q;
-        double reach = B[k].r + tol;
         const cc_segment *g = &seg[s];
+        cc_vec2 p = cc__v(kx, ky), q;
         /* most walls are far: the segment's box grown by the reach rules them out cheaply */
-        if (p.x + reach < (g->a.x < g->b.x ? g->a.x : g->b.x) || p.x - reach > (g->a.x > g->b.x ? g->a.x : g->b.x) ||
-            p.y + reach < (g->a.y < g->b.y ? g->a.y : g->b.y) || p.y - reach > (g->a.y > g->b.y ? g->a.y : g->b.y))
+        if (kx + reach < (g->a.x < g->b.x ? g->a.x : g->b.x) || kx - reach > (g->a.x > g->b.x ? g->a.x : g->b.x) ||
+            ky + reach < (g->a.y < g->b.y ? g->a.y : g->b.y) || ky - reach > (g->a.y > g->b.y ? g->a.y : g->b.y))
             continue;
         q = cc_closest_point_on_segment(p, g);
         if (cc__length(cc__sub(q, p)) <= reach) {

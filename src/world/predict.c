@@ -12,21 +12,47 @@
 #include "solver.inc"
 #include "precision_end.h"
 
+/* The neighbour scans inline the cheap rejection of a pair and call the solver out of line. */
+#if defined(__GNUC__)
+#define CC__INLINE_ALWAYS static inline __attribute__((always_inline))
+#define CC__NOINLINE static __attribute__((noinline))
+#else
+#define CC__INLINE_ALWAYS static inline
+#define CC__NOINLINE static
+#endif
+
 typedef struct cc__cand {
     double t; /* absolute */
     int kind, partner;
     uint32_t pcount;
 } cc__cand;
 
+/* The solver's part of cc__try_circle, out of line: most pairs never get here. */
+CC__NOINLINE void cc__try_close(const cc_world *w, const cc__body *bi, const cc__body *bj, int j, cc_vec2 dp, cc_vec2 dv,
+                          double now, cc__cand *best)
+{
+    double t;
+    cc_vec2 n;
+    int r = cc__sweep_rel(dp, dv, bi->r + bj->r, 0, 0, best->t - now, &t, &n);
+    if (r == CC_MISS || !(now + t < best->t))
+        return;
+    if (!cc__approaching(w, -cc__dot(dv, n), fabs(bi->vx) + fabs(bi->vy) + fabs(bj->vx) + fabs(bj->vy)))
+        return;
+    best->t = now + t; /* now for an overlap */
+    best->kind = CC__EV_CIRCLE;
+    best->partner = j;
+    best->pcount = bj->count;
+}
+
 /* Contact of moving body i (at now) with circle j: a hit approaching faster than rounding, or
- * an overlap left by rounding whose bodies approach (a contact now). */
-static void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body *bi, int i_fixed, int j,
-                           double now, cc__cand *best, uint64_t *tests)
+ * an overlap left by rounding whose bodies approach (a contact now). Inline: the scans call it
+ * for every neighbour, and most are rejected by the first test. */
+CC__INLINE_ALWAYS void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body *bi, int i_fixed, int j,
+                                      double now, cc__cand *best, uint64_t *tests)
 {
     const cc__body *bj = &B[j];
-    double dt = now - bj->t, t, R, dv2, cr;
-    cc_vec2 dp, dv, n;
-    int r;
+    double dt = now - bj->t, R, dv2, cr;
+    cc_vec2 dp, dv;
     if (i_fixed && isinf(CC__CARR(w, cc__cold, off_cold)[j].m))
         return; /* two immovable circles pass through each other */
     dp.x = (bj->px + bj->vx * dt) - bi->px;
@@ -43,15 +69,7 @@ static void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body 
     cr = dp.x * dv.y - dp.y * dv.x;
     if (cr * cr > 1.0000001 * dv2 * R * R && dp.x * dp.x + dp.y * dp.y > R * R)
         return;
-    r = cc__sweep_rel(dp, dv, R, 0, 0, best->t - now, &t, &n);
-    if (r == CC_MISS || !(now + t < best->t))
-        return;
-    if (!cc__approaching(w, -cc__dot(dv, n), fabs(bi->vx) + fabs(bi->vy) + fabs(bj->vx) + fabs(bj->vy)))
-        return;
-    best->t = now + t; /* now for an overlap */
-    best->kind = CC__EV_CIRCLE;
-    best->partner = j;
-    best->pcount = bj->count;
+    cc__try_close(w, bi, bj, j, dp, dv, now, best);
 }
 
 /* Walls within reach before min(best, t_cross). */
@@ -125,32 +143,30 @@ static double cc__cross_time(const cc_world *w, const cc__body *b, int32_t *dir)
     return w->now + (tx > 0.0 ? tx : 0.0);
 }
 
-/* Circles filed under cell (x, y), tested against body i; s is the cell's hash slot. */
-static inline void cc__scan_slot(const cc_world *w, const cc__body *B, const int32_t *slot, uint32_t s, int i,
-                                 int i_fixed, int32_t x, int32_t y, cc__cand *best, uint64_t *tests)
+/* Circles filed under the nx x ny cells from (x0, y0), row by row, tested against body i. Within
+ * a tile (cc__grid_slot) a row's slots are consecutive and rows are a tile's width apart, so
+ * the hash is computed only where a tile begins. One flat loop, the world's fields read once:
+ * the scans are the hot path. */
+static void cc__scan_block(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0, int32_t y0, int nx,
+                           int ny, cc__cand *best, uint64_t *tests)
 {
+    const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+    const uint32_t mx = (1u << w->tile_bits_x) - 1u, my = (1u << w->tile_bits_y) - 1u, mask = w->slot_mask;
+    const uint32_t row = 1u << w->tile_bits_x;
+    const double now = w->now;
+    uint32_t s_row = cc__grid_slot(w, x0, y0), s;
+    int32_t x, y;
     int j;
-    for (j = slot[s]; j >= 0; j = B[j].next)
-        if (B[j].cx == x && B[j].cy == y && j != i)
-            cc__try_circle(w, B, &B[i], i_fixed, j, w->now, best, tests);
-}
-
-static void cc__scan_cell(const cc_world *w, const cc__body *B, const int32_t *slot, int i, int i_fixed, int32_t x,
-                          int32_t y, cc__cand *best, uint64_t *tests)
-{
-    cc__scan_slot(w, B, slot, cc__grid_slot(w, x, y), i, i_fixed, x, y, best, tests);
-}
-
-/* The three cells (x0 .. x0 + 2, y): within a tile their slots are consecutive. */
-static void cc__scan_row(const cc_world *w, const cc__body *B, const int32_t *slot, int i, int i_fixed, int32_t x0,
-                         int32_t y, cc__cand *best, uint64_t *tests)
-{
-    uint32_t s = cc__grid_slot(w, x0, y);
-    int32_t x;
-    for (x = x0; x < x0 + 3; x++) {
-        if (x != x0)
-            s = ((uint32_t)x & ((1u << w->tile_bits_x) - 1u)) ? (s + 1u) & w->slot_mask : cc__grid_slot(w, x, y);
-        cc__scan_slot(w, B, slot, s, i, i_fixed, x, y, best, tests);
+    for (y = y0; y < y0 + ny; y++) {
+        if (y != y0)
+            s_row = ((uint32_t)y & my) ? (s_row + row) & mask : cc__grid_slot(w, x0, y);
+        for (x = x0, s = s_row; x < x0 + nx; x++) {
+            if (x != x0)
+                s = ((uint32_t)x & mx) ? (s + 1u) & mask : cc__grid_slot(w, x, y);
+            for (j = slot[s]; j >= 0; j = B[j].next)
+                if (B[j].cx == x && B[j].cy == y && j != i)
+                    cc__try_circle(w, B, &B[i], i_fixed, j, now, best, tests);
+        }
     }
 }
 
@@ -200,10 +216,7 @@ void cc__predict(cc_world *w, int i)
             if (j != i && (C[j].flags & CC__ALIVE))
                 cc__try_circle(w, B, bi, fixed, j, w->now, &best, &tests);
     } else {
-        const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-        int32_t cx = bi->cx, cy = bi->cy, y;
-        for (y = cy - 1; y <= cy + 1; y++)
-            cc__scan_row(w, B, slot, i, fixed, cx - 1, y, &best, &tests);
+        cc__scan_block(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, &best, &tests);
         for (j = w->large_head; j >= 0; j = B[j].next)
             if (j != i)
                 cc__try_circle(w, B, bi, fixed, j, w->now, &best, &tests);
@@ -218,8 +231,7 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
     cc__body *B = CC__ARR(w, cc__body, off_body);
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     const cc__event *ev = &CC__CARR(w, cc__event, off_ev)[i];
-    const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-    int32_t cx = B[i].cx, cy = B[i].cy, k;
+    int32_t cx = B[i].cx, cy = B[i].cy;
     uint64_t tests = 0;
     double t_cross;
     int32_t ndir;
@@ -233,10 +245,10 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
     best.kind = ev->kind;
     best.partner = ev->partner;
     best.pcount = ev->pcount;
-    for (k = -1; k <= 1 && dir < 2; k++) /* a new column of cells right or left */
-        cc__scan_cell(w, B, slot, i, fixed, dir == 0 ? cx + 1 : cx - 1, cy + k, &best, &tests);
-    if (dir >= 2) /* a new row of cells above or below */
-        cc__scan_row(w, B, slot, i, fixed, cx - 1, dir == 2 ? cy + 1 : cy - 1, &best, &tests);
+    if (dir < 2) /* a new column of cells right or left */
+        cc__scan_block(w, B, i, fixed, dir == 0 ? cx + 1 : cx - 1, cy - 1, 1, 3, &best, &tests);
+    else /* a new row of cells above or below */
+        cc__scan_block(w, B, i, fixed, cx - 1, dir == 2 ? cy + 1 : cy - 1, 3, 1, &best, &tests);
     w->stats.pairs_tested += tests;
     t_cross = cc__cross_time(w, &B[i], &ndir);
     cc__finish(w, i, &best, t_cross, ndir);
