@@ -84,8 +84,8 @@ static void test_cradle(void)
             c = get(w, i);
             TEST_ASSERT_DOUBLE_WITHIN(1e-12, i == n - 1 ? 1.0 : 0.0, c.vel.x);
             TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.0, c.vel.y);
-            TEST_ASSERT_DOUBLE_WITHIN(1e-11, i == 0 ? -2.0 : i == n - 1 ? 2.0 * (n - 2) + 6.0 : 2.0 * (i - 1),
-                                      c.pos.x);
+            double x = i == 0 ? -2.0 : i == n - 1 ? 2.0 * (n - 2) + 6.0 : 2.0 * (i - 1);
+            TEST_ASSERT_DOUBLE_WITHIN(1e-11, x, c.pos.x);
         }
         TEST_ASSERT_EQUAL_UINT64(n - 1, stats(w).collisions);
         TEST_ASSERT_TRUE(tw_canary_ok(&m));
@@ -242,6 +242,73 @@ static void test_two_impacts_at_one_instant(void)
     tw_free(&m);
 }
 
+/* The same two impacts, turned by 37 degrees, far from the origin and late: the scene's axis
+ * is u = (cos 37, sin 37), shifted to (3e4, -2e4), and the circles start 1000 further out so
+ * that the impacts come at t = 1003. Turned, the two impacts are no longer mirror images in
+ * floating point: their predicted times and positions differ by rounding (ulps of 3e4 and of
+ * 1e3). They still meet the touching tolerance and form one cluster, so the outcome is
+ * symmetric about the axis to rounding. */
+static void test_two_impacts_turned_far_and_late(void)
+{
+    const double c60 = 0.5, s60 = sqrt(3.0) / 2.0, X = 3e4, Y = -2e4, D = 1005.0;
+    const double deg = 3.14159265358979323846 / 180.0, ux = cos(37.0 * deg), uy = sin(37.0 * deg);
+    const double px = -uy, py = ux; /* perpendicular to the axis */
+    tw_mem m;
+    cc_world *w = world(&m, 8, 0, 1.0);
+    cc_circle c[3];
+    double da, dc;
+    int i;
+    c[0] = circle(X, Y, 0.0, 0.0, 1.0, 1.0);
+    const double ax = c60 * ux + s60 * px, ay = c60 * uy + s60 * py; /* from B towards A */
+    const double cx = c60 * ux - s60 * px, cy = c60 * uy - s60 * py; /* from B towards C */
+    c[1] = circle(X + D * ax, Y + D * ay, -ax, -ay, 1.0, 1.0);
+    c[2] = circle(X + D * cx, Y + D * cy, -cx, -cy, 1.0, 1.0);
+    for (i = 0; i < 3; ++i)
+        TEST_ASSERT_EQUAL_INT(i, cc_world_add_circle(w, &c[i]));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1004.0));
+    for (i = 0; i < 3; ++i)
+        c[i] = get(w, i);
+    /* B along -u only; A and C mirror images about the axis, in velocity and in position */
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 0.0, c[0].vel.x * px + c[0].vel.y * py);
+    TEST_ASSERT_TRUE(c[0].vel.x * ux + c[0].vel.y * uy < -0.1);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, c[1].vel.x * ux + c[1].vel.y * uy,
+                              c[2].vel.x * ux + c[2].vel.y * uy);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, -(c[1].vel.x * px + c[1].vel.y * py),
+                              c[2].vel.x * px + c[2].vel.y * py);
+    da = (c[1].pos.x - X) * px + (c[1].pos.y - Y) * py;
+    dc = (c[2].pos.x - X) * px + (c[2].pos.y - Y) * py;
+    TEST_ASSERT_DOUBLE_WITHIN(1e-8, -da, dc);
+    TEST_ASSERT_EQUAL_UINT64(2, stats(w).collisions);
+    tw_free(&m);
+}
+
+/* A chain with a gap: A (mass 2) at x = -4 moving +1 hits B (x = 0) at t = 2: A 1/3, B 4/3.
+ * B closes the gap of 0.5 to C (x = 2.5) by t = 2.375 and stops there (equal masses), A being
+ * at -1.875. A must find the stopped B (a body at rest predicts nothing): the gap of 0.375
+ * closes at 1/3 by t = 3.5, A at -1.5, B at 0.5; then A 1/9, B 4/9. At t = 5: A at
+ * -1.5 + 1.5/9, B at 0.5 + 1.5 * 4/9. (Before the fix in exact.c, A passed through B.) */
+static void test_chain_with_a_gap(void)
+{
+    tw_mem m;
+    cc_world *w = world(&m, 4, 0, 1.0);
+    cc_circle a = circle(-4.0, 0.0, 1.0, 0.0, 1.0, 2.0), b = circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
+              c = circle(2.5, 0.0, 0.0, 0.0, 1.0, 1.0);
+    (void)cc_world_add_circle(w, &a);
+    (void)cc_world_add_circle(w, &b);
+    (void)cc_world_add_circle(w, &c);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 5.0));
+    a = get(w, 0);
+    b = get(w, 1);
+    c = get(w, 2);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 1.0 / 9.0, a.vel.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 4.0 / 9.0, b.vel.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 4.0 / 3.0, c.vel.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, -1.5 + 1.5 / 9.0, a.pos.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.5 + 1.5 * 4.0 / 9.0, b.pos.x);
+    TEST_ASSERT_EQUAL_UINT64(3, stats(w).collisions);
+    tw_free(&m);
+}
+
 /* ---- walls, masses, immovable bodies ---------------------------------------------------- */
 
 /* Walls along x = 0 and y = 0; a ball of radius 1 at (5, 5) moving (-1, -1) touches both at
@@ -302,8 +369,9 @@ static void test_immovable_circle_and_wall(void)
     tw_mem m;
     cc_world *w = world(&m, 4, 1, 1.0);
     cc_segment s = segment(-1.0, -10.0, -1.0, 10.0);
-    cc_circle b = circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0), o = circle(0.0, 2.0, 0.0, 0.0, 1.0, INFINITY),
-              a = circle(4.0 * h, -4.0 * h, -h, h, 1.0, 1.0), got;
+    cc_circle b = circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0), got;
+    cc_circle o = circle(0.0, 2.0, 0.0, 0.0, 1.0, INFINITY); /* immovable */
+    cc_circle a = circle(4.0 * h, -4.0 * h, -h, h, 1.0, 1.0);
     (void)cc_world_add_segment(w, &s);
     TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &b));
     TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &o));
@@ -333,6 +401,8 @@ int main(void)
     RUN_TEST(test_rack_break_restitution_0_9);
     RUN_TEST(test_rack_order_of_adding);
     RUN_TEST(test_two_impacts_at_one_instant);
+    RUN_TEST(test_two_impacts_turned_far_and_late);
+    RUN_TEST(test_chain_with_a_gap);
     RUN_TEST(test_corner_at_45_degrees);
     RUN_TEST(test_unequal_masses);
     RUN_TEST(test_immovable_circle_and_wall);
