@@ -143,10 +143,12 @@ int cc__world_resolve_pairwise(cc_world *w, const cc__touch *touch, int n)
 }
 
 /* EXACT resolves each impact with everything touching it at that instant (simultaneous.c);
- * SWEPT and DISCRETE, which do not keep positions current between impacts, pairwise. */
+ * SWEPT and DISCRETE, which do not keep positions current between impacts, pairwise; so does
+ * the rebuild's pass over overlaps the caller made (w->dirty: without a current grid, finding
+ * what touches would cost a look at every circle for each overlap). */
 int cc__world_resolve(cc_world *w, const cc__touch *touch, int n)
 {
-    if (w->clu_bodies > 0)
+    if (w->clu_bodies > 0 && !w->dirty)
         return cc__world_resolve_cluster(w, touch, n);
     return cc__world_resolve_pairwise(w, touch, n);
 }
