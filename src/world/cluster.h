@@ -38,7 +38,7 @@ typedef struct cc__cluster_report {
 
 /* Bytes of scratch memory cc__cluster_resolve needs for a cluster of this size (aligned like
  * malloc's memory), or 0 when the counts are negative or the size would overflow. Grows as
- * 16 * contacts^2: the solver keeps a dense Delassus matrix and its Cholesky factor. */
+ * 4 * contacts^2: the solver keeps the packed L D L^T factor of its Delassus matrix. */
 size_t cc__cluster_scratch_size(int bodies, int contacts);
 
 /* Resolves the cluster with restitution e in [0, 1]; when no contact approaches faster than
