@@ -46,6 +46,7 @@ int cc__step_exact(cc_world *w, double t_end)
             return CC_EVENT_LIMIT; /* w->now is the time of the last event processed */
         done++;
         w->stats.events++;
+        cc__prefetch_ahead(w);
         e = &EV[i];
         if (t > w->now)
             w->now = t;

@@ -155,6 +155,9 @@ void cc__predict(cc_world *w, int id);
 void cc__predict_crossed(cc_world *w, int id, int dir);
 /* re-predicts every movable body that could meet body id (its neighbourhood) */
 void cc__predict_neighbours(cc_world *w, int id);
+/* A large world (EXACT): asks the memory for what the next few events will read, so that it
+ * arrives while the current one is processed. Changes nothing. */
+void cc__prefetch_ahead(const cc_world *w);
 /* True when approach speed vn (> 0: closing) is a collision: faster than the rounding of the
  * bodies' speeds (their sum is `speeds`), and not a resting contact, which approaches at less
  * than rest_speed * 2^-20 (the sequence of ever smaller impulses that pairwise resolution of
