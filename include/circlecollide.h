@@ -184,7 +184,7 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * memory that the caller provides (cc_world_size / cc_world_init); it never allocates.
  *
  * Memory    Everything lives inside [memory, memory + bytes): the world stores no address, not
- *           even into its own block, so a world may be copied (memcpy) to other 16-byte aligned
+ *           even into its own block, so a world may be copied (memcpy) to other 8-byte aligned
  *           memory of the same size and used from there. It keeps no pointer to the caller's
  *           defs, circles or segments (it copies them). About 160 bytes per circle (one 64-byte
  *           line of hot state, the predicted event, queue and grid entries) plus 32 per wall;
@@ -319,8 +319,8 @@ typedef struct cc_world_def {
 CC_API void cc_world_def_init(cc_world_def *def);
 
 /* Bytes of memory cc_world_init needs for def (its capacities), or 0 when def is invalid or
- * its struct_size is too small. The memory must be aligned to 16 bytes (malloc's alignment on
- * 64-bit systems). */
+ * its struct_size is too small. The memory must be aligned to 8 bytes (as malloc's memory and a
+ * static array of double are). */
 CC_API size_t cc_world_size(const cc_world_def *def);
 
 /* Builds an empty world at time 0 inside memory[0, bytes). Never writes outside it, never

@@ -37,7 +37,7 @@ endif()
 function(demo_golden scene)
   string(REPLACE ";" " " _args "${ARGN}")
   add_test(NAME demo_golden_${scene}
-    COMMAND ${CMAKE_COMMAND} -DDEMO=$<TARGET_FILE:cc_demo> -DSCENE=${scene} "-DARGS=${_args}"
+    COMMAND ${CMAKE_COMMAND} -DDEMO=$<TARGET_FILE:cc_demo> "-DEMULATOR=${CMAKE_CROSSCOMPILING_EMULATOR}" -DSCENE=${scene} "-DARGS=${_args}"
       -DOUT=${CMAKE_CURRENT_BINARY_DIR}/demo_frames/${scene}
       -DGOLDEN=${CMAKE_CURRENT_SOURCE_DIR}/demo_golden/${scene}.sha256
       -DCHECK_GOLDEN=${_demo_golden_check} -P ${CMAKE_CURRENT_SOURCE_DIR}/demo_run.cmake)
@@ -57,7 +57,7 @@ demo_golden(tunnel --size 192x108 --frames 12 --fps 30)
 function(demo_cli name code text)
   string(REPLACE ";" " " _args "${ARGN}")
   add_test(NAME demo_cli_${name}
-    COMMAND ${CMAKE_COMMAND} -DDEMO=$<TARGET_FILE:cc_demo> "-DARGS=${_args}" -DEXPECT_EXIT=${code}
+    COMMAND ${CMAKE_COMMAND} -DDEMO=$<TARGET_FILE:cc_demo> "-DEMULATOR=${CMAKE_CROSSCOMPILING_EMULATOR}" "-DARGS=${_args}" -DEXPECT_EXIT=${code}
       "-DEXPECT_TEXT=${text}" -DOUT=${CMAKE_CURRENT_BINARY_DIR}/demo_frames/cli_${name}
       -P ${CMAKE_CURRENT_SOURCE_DIR}/demo_run.cmake)
   set_tests_properties(demo_cli_${name} PROPERTIES LABELS "demo" TIMEOUT 60)

@@ -4,6 +4,7 @@
 #            the SHA-256 of all of them against GOLDEN; with the environment variable
 #            CC_DEMO_UPDATE_GOLDEN=1 it writes GOLDEN instead.
 #   cli:     -DDEMO= -DARGS= -DEXPECT_EXIT= -DEXPECT_TEXT= -DOUT=
+#   both take -DEMULATOR= (CMAKE_CROSSCOMPILING_EMULATOR: qemu-arm ... in a cross build).
 #            runs cc_demo with ARGS (@OUT@ stands for OUT/frames, @FILE@ for a regular file,
 #            @EMPTY@ as the last word for an empty argument) and checks its exit code, that
 #            stderr (stdout or stderr when EXIT is 0) contains EXPECT_TEXT, and that a failed run
@@ -24,10 +25,10 @@ if(DEFINED EXPECT_EXIT)
   if(_run MATCHES "@EMPTY@$")
     # an empty word does not survive a CMake list: pass it explicitly
     list(REMOVE_AT _run -1)
-    execute_process(COMMAND "${DEMO}" ${_run} "" RESULT_VARIABLE _rc OUTPUT_VARIABLE _out
+    execute_process(COMMAND ${EMULATOR} "${DEMO}" ${_run} "" RESULT_VARIABLE _rc OUTPUT_VARIABLE _out
       ERROR_VARIABLE _err)
   else()
-    execute_process(COMMAND "${DEMO}" ${_run} RESULT_VARIABLE _rc OUTPUT_VARIABLE _out
+    execute_process(COMMAND ${EMULATOR} "${DEMO}" ${_run} RESULT_VARIABLE _rc OUTPUT_VARIABLE _out
       ERROR_VARIABLE _err)
   endif()
   if(NOT _rc STREQUAL "${EXPECT_EXIT}")
@@ -57,7 +58,7 @@ endif()
 # ---- golden run ---------------------------------------------------------------------------
 function(run_into dir digest_var)
   file(REMOVE_RECURSE "${dir}")
-  execute_process(COMMAND "${DEMO}" --scene ${SCENE} ${_args} --out "${dir}"
+  execute_process(COMMAND ${EMULATOR} "${DEMO}" --scene ${SCENE} ${_args} --out "${dir}"
     RESULT_VARIABLE rc ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "cc_demo --scene ${SCENE} ${ARGS} failed (exit ${rc}):\n${err}")

@@ -98,11 +98,11 @@ static void test_init_memory_errors(void)
     TEST_ASSERT_NULL(cc_world_init(mem, n - 1, &d, &st));
     TEST_ASSERT_EQUAL_INT(CC_ERR_MEMORY, st);
     st = 99;
-    TEST_ASSERT_NULL(cc_world_init(mem + 8, n, &d, &st)); /* misaligned */
+    TEST_ASSERT_NULL(cc_world_init(mem + 4, n, &d, &st)); /* misaligned: 8 bytes are required */
     TEST_ASSERT_EQUAL_INT(CC_ERR_MEMORY, st);
     /* nothing was written by the failed calls */
     TEST_ASSERT_EQUAL_INT(0x33, mem[0]);
-    TEST_ASSERT_EQUAL_INT(0x33, mem[8]);
+    TEST_ASSERT_EQUAL_INT(0x33, mem[4]);
     st = 99;
     TEST_ASSERT_NULL(cc_world_init(mem, n, NULL, &st));
     TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, st);

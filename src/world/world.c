@@ -55,6 +55,11 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
     return CC_OK;
 }
 
+/* The block's start needs the alignment of its widest members (double, uint64_t): 8 bytes, what
+ * malloc gives on 32-bit systems and a static double array has on a microcontroller. The parts
+ * inside are laid out at multiples of 16 from the start, which costs nothing and keeps them
+ * line-friendly where the block happens to be 16-aligned. */
+#define CC_WORLD_ALIGN 8u
 static size_t cc__align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
 /* Hash slots: a power of two >= 2 * max_circles (load <= 1/2), 0 for a world without grid. */
@@ -123,7 +128,8 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
     cc_world_def d;
     cc_world *w;
     int r = cc__read_def(def, &d);
-    if (r == CC_OK && (memory == NULL || ((uintptr_t)memory & 15u) != 0 || bytes < cc__layout(&d, NULL)))
+    if (r == CC_OK && (memory == NULL || ((uintptr_t)memory & (CC_WORLD_ALIGN - 1u)) != 0 ||
+                        bytes < cc__layout(&d, NULL)))
         r = CC_ERR_MEMORY;
     if (status != NULL)
         *status = r;
