@@ -5,6 +5,7 @@
  * overlapping pair that approaches is a contact now, one that separates is left to drift apart.
  * Also the full rebuild of EXACT mode's grid and predictions. */
 #include "world_internal.h"
+#include "scan.h"
 
 /* Circles whose position an overlap pass changed are filed again under their new cell. */
 static void cc__refile_moved(cc_world *w, int only)
@@ -22,6 +23,28 @@ static void cc__refile_moved(cc_world *w, int only)
     }
 }
 
+/* Quick rejects before the exact tests, so that the pass costs a few comparisons for the pairs
+ * and walls that are nowhere near: each is conservative (it rules out only what the exact test
+ * in cc__world_unoverlap would find apart, with a margin far above rounding), so the outcome is
+ * bit for bit that of testing everything. Both bodies are at w->now. */
+static inline int cc__circles_apart(const cc__body *a, const cc__body *b)
+{
+    double dx = b->px - a->px, dy = b->py - a->py, R = a->r + b->r, R2 = R * R;
+    /* R2 normal: squares below that lose relative precision */
+    return R2 > 0x1p-1000 && dx * dx + dy * dy > R2 * (1.0 + 0x1p-20);
+}
+
+/* The wall's box and the circle's box grown by a margin of 2^-30 of the numbers involved are
+ * disjoint: the closest point on the wall lies in its box (to rounding), so the circle cannot
+ * reach it. */
+static inline int cc__wall_apart(const cc__body *b, const cc_segment *g)
+{
+    double x0 = g->a.x < g->b.x ? g->a.x : g->b.x, x1 = g->a.x < g->b.x ? g->b.x : g->a.x;
+    double y0 = g->a.y < g->b.y ? g->a.y : g->b.y, y1 = g->a.y < g->b.y ? g->b.y : g->a.y;
+    double reach = b->r + 0x1p-30 * (b->r + fabs(b->px) + fabs(b->py) + fabs(x0) + fabs(x1) + fabs(y0) + fabs(y1));
+    return x0 - b->px > reach || b->px - x1 > reach || y0 - b->py > reach || b->py - y1 > reach;
+}
+
 /* Pushes body i out of everything it overlaps (only_higher: circles of higher index only, for
  * a pass over all pairs); the circles moved are marked (cc__world_mark, CC__MOVED). */
 static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
@@ -34,29 +57,35 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
             if (j != i && (C[j].flags & CC__ALIVE)) {
                 cc__advance_body(&B[j], w->now);
                 w->stats.pairs_tested++;
-                (void)cc__world_unoverlap(w, i, j, -1);
+                if (!cc__circles_apart(&B[i], &B[j]))
+                    (void)cc__world_unoverlap(w, i, j, -1);
             }
     } else {
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
         int32_t cx = B[i].cx, cy = B[i].cy, x, y;
+        uint32_t sl = 0;
         for (y = cy - 1; y <= cy + 1; y++)
             for (x = cx - 1; x <= cx + 1; x++)
-                for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
+                for (sl = cc__row_slot(w, x, y, sl, x == cx - 1), j = slot[sl]; j >= 0; j = B[j].next)
                     if (B[j].cx == x && B[j].cy == y && j != i && (!only_higher || j > i)) {
                         cc__advance_body(&B[j], w->now);
                         w->stats.pairs_tested++;
-                        (void)cc__world_unoverlap(w, i, j, -1);
+                        if (!cc__circles_apart(&B[i], &B[j]))
+                            (void)cc__world_unoverlap(w, i, j, -1);
                     }
         if (!only_higher)
             for (j = w->large_head; j >= 0; j = B[j].next)
                 if (j != i)
                     (void)cc__world_unoverlap(w, i, j, -1);
     }
-    if (!isinf(C[i].m))
+    if (!isinf(C[i].m)) {
+        const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
         for (s = 0; s < w->n_segments; s++) {
             w->stats.pairs_tested++;
-            (void)cc__world_unoverlap(w, i, -1, s);
+            if (!cc__wall_apart(&B[i], &seg[s]))
+                (void)cc__world_unoverlap(w, i, -1, s);
         }
+    }
 }
 
 void cc__rebuild(cc_world *w)

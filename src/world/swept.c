@@ -6,23 +6,23 @@
  * again after a collision: a body's second impact within a step is missed, which is the mode's
  * trade. Finally every body is carried to the end of the step.
  *
- * Candidate pairs: a "slow" body moves at most half a cell in the step and meets slow bodies
- * within a few cells of its own; a "fast" one is taken out of the grid and looks up the slow
- * bodies in the cells its whole path covers, and tests every other fast body directly. */
+ * Candidate pairs: each pair is swept once, by the body of the two that travels further in the
+ * step, among the cells its own motion covers (cc__sweeps_from); bodies at rest sweep nothing. */
 #include "world_internal.h"
+#include "scan.h"
 
 #include "precision_double.h"
 #include "helpers.inc"
 #include "solver.inc"
 #include "precision_end.h"
 
-#define CC__FAST 16
-
 /* Offers an impact at relative time t to body i (kept when earlier than what it holds). */
 static void cc__offer(cc_world *w, int i, double t, int kind, int partner)
 {
     cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
-    if (ev->kind != CC__EV_NONE && !(t < ev->t))
+    /* on a tie the lower (kind, partner): the outcome does not depend on the order of the tests */
+    if (ev->kind != CC__EV_NONE &&
+        !(t < ev->t || (t == ev->t && (kind < ev->kind || (kind == ev->kind && partner < ev->partner)))))
         return;
     ev->t = t;
     ev->kind = kind;
@@ -84,32 +84,29 @@ static void cc__walls(cc_world *w, int i, double dt)
     }
 }
 
+/* How far body b may move along either axis in the step (an upper bound: |vx| + |vy| >= each). */
+static double cc__travel(const cc__body *b, double dt) { return (fabs(b->vx) + fabs(b->vy)) * dt; }
+
+/* Each pair is swept once, from the body that travels further in the step (the higher index
+ * on a tie): a body at rest sweeps nothing, and the cells a body looks at cover its own motion,
+ * not the fastest body's. Pair (i, j) can only meet if along each axis their centres are within
+ * r_i + r_j + travel_i + travel_j <= r_i + rmax + 2 travel_i when travel_j <= travel_i. */
+static int cc__sweeps_from(double di, int i, double dj, int j) { return dj < di || (dj == di && j < i); }
+
 /* Finds each body's first impact in [now, now + dt]. */
 static void cc__find_impacts(cc_world *w, double dt)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
-    cc__cold *C = CC__ARR(w, cc__cold, off_cold);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     cc__event *ev = CC__ARR(w, cc__event, off_ev);
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-    double half = 0.5 * w->cs, dslow = 0.0, rmax = 0.0;
-    int fast_head = -1, i, j, k;
+    double rmax = 0.0;
+    int i, j;
     for (i = 0; i < w->id_end; i++) {
-        double d;
         ev[i].kind = CC__EV_NONE;
         ev[i].t = ev[i].t_cross = HUGE_VAL;
-        if (!(C[i].flags & CC__ALIVE))
-            continue;
-        d = (fabs(B[i].vx) + fabs(B[i].vy)) * dt;
-        if (!(C[i].flags & CC__LARGE) && B[i].r > rmax)
+        if ((C[i].flags & (CC__ALIVE | CC__LARGE)) == CC__ALIVE && B[i].r > rmax)
             rmax = B[i].r;
-        if (w->use_grid && !(C[i].flags & CC__LARGE) && d > half) {
-            cc__grid_remove(w, i);
-            C[i].flags |= CC__FAST;
-            B[i].next = fast_head;
-            fast_head = i;
-        } else if (d > dslow) {
-            dslow = d;
-        }
     }
     if (!w->use_grid) {
         for (i = 0; i < w->id_end; i++)
@@ -117,52 +114,43 @@ static void cc__find_impacts(cc_world *w, double dt)
                 if ((C[i].flags & CC__ALIVE) && (C[j].flags & CC__ALIVE))
                     cc__pair(w, i, j, dt);
     } else {
-        /* two slow bodies that meet are within 2 rmax + 2 dslow of each other */
-        k = (int)ceil((2.0 * rmax + 2.0 * dslow) * w->inv_cs);
         for (i = 0; i < w->id_end; i++) {
-            int32_t x, y;
-            if (!(C[i].flags & CC__ALIVE) || (C[i].flags & (CC__LARGE | CC__FAST)))
-                continue;
-            for (y = B[i].cy - k; y <= B[i].cy + k; y++)
-                for (x = B[i].cx - k; x <= B[i].cx + k; x++)
-                    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
-                        if (j > i && B[j].cx == x && B[j].cy == y)
-                            cc__pair(w, i, j, dt);
-            for (j = w->large_head; j >= 0; j = B[j].next)
-                cc__pair(w, i, j, dt);
-        }
-        for (i = fast_head; i >= 0; i = B[i].next) {
             const cc__body *b = &B[i];
-            double reach = b->r + rmax + dslow;
-            int32_t x0 = cc__grid_coord(w, (b->vx < 0 ? b->px + b->vx * dt : b->px) - reach);
-            int32_t x1 = cc__grid_coord(w, (b->vx > 0 ? b->px + b->vx * dt : b->px) + reach);
-            int32_t y0 = cc__grid_coord(w, (b->vy < 0 ? b->py + b->vy * dt : b->py) - reach);
-            int32_t y1 = cc__grid_coord(w, (b->vy > 0 ? b->py + b->vy * dt : b->py) + reach), x, y;
-            for (j = B[i].next; j >= 0; j = B[j].next)
-                cc__pair(w, i, j, dt); /* fast against fast */
+            double di, reach;
+            int32_t x0, x1, y0, y1, x, y;
+            uint32_t sl = 0;
+            if ((C[i].flags & (CC__ALIVE | CC__LARGE)) != CC__ALIVE)
+                continue;
             for (j = w->large_head; j >= 0; j = B[j].next)
                 cc__pair(w, i, j, dt);
+            if ((di = cc__travel(b, dt)) == 0.0)
+                continue; /* at rest: what meets it travels further and finds it */
+            /* margins far above the rounding of the cell bounds and of the sweep */
+            reach = (b->r + rmax + 2.0 * di) * (1.0 + 0x1p-20) + 0x1p-40 * (fabs(b->px) + fabs(b->py));
+            x0 = cc__grid_coord(w, b->px - reach);
+            x1 = cc__grid_coord(w, b->px + reach);
+            y0 = cc__grid_coord(w, b->py - reach);
+            y1 = cc__grid_coord(w, b->py + reach);
             if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > (double)w->id_end) {
-                for (j = 0; j < w->id_end; j++) /* a path over more cells than there are bodies */
-                    if ((C[j].flags & CC__ALIVE) && !(C[j].flags & (CC__LARGE | CC__FAST)))
+                for (j = 0; j < w->id_end; j++) /* more cells than there are bodies */
+                    if ((C[j].flags & (CC__ALIVE | CC__LARGE)) == CC__ALIVE && j != i &&
+                        cc__sweeps_from(di, i, cc__travel(&B[j], dt), j))
                         cc__pair(w, i, j, dt);
                 continue;
             }
             for (y = y0; y <= y1; y++)
                 for (x = x0; x <= x1; x++)
-                    for (j = slot[cc__grid_slot(w, x, y)]; j >= 0; j = B[j].next)
-                        if (B[j].cx == x && B[j].cy == y)
+                    for (sl = cc__row_slot(w, x, y, sl, x == x0), j = slot[sl]; j >= 0; j = B[j].next)
+                        if (B[j].cx == x && B[j].cy == y && j != i && cc__sweeps_from(di, i, cc__travel(&B[j], dt), j))
                             cc__pair(w, i, j, dt);
         }
     }
     for (i = 0; i < w->id_end; i++)
         if (C[i].flags & CC__ALIVE)
             cc__walls(w, i, dt);
-    for (i = 0; i < w->id_end; i++) {
-        C[i].flags &= ~CC__FAST;
+    for (i = 0; i < w->id_end; i++)
         if (ev[i].kind != CC__EV_NONE)
             cc__heap_update(w, i, ev[i].t);
-    }
 }
 
 int cc__step_swept(cc_world *w, double dt)

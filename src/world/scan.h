@@ -1,0 +1,18 @@
+/* Walking a row of grid cells (SWEPT and DISCRETE scans): the slot of the next cell to the
+ * right is one more than this one's while both lie in the same tile (see cc__grid_slot), so a
+ * row costs one hash per tile it touches instead of one per cell. */
+#ifndef CC_WORLD_SCAN_H
+#define CC_WORLD_SCAN_H
+
+#include "world_internal.h"
+
+/* The slot of cell (x, y), given the slot s of cell (x - 1, y) (ignored when x is the first
+ * cell of the row: first != 0). */
+static inline uint32_t cc__row_slot(const cc_world *w, int32_t x, int32_t y, uint32_t s, int first)
+{
+    if (first || ((uint32_t)x & ((1u << w->tile_bits_x) - 1u)) == 0)
+        return cc__grid_slot(w, x, y);
+    return (s + 1u) & w->slot_mask;
+}
+
+#endif
