@@ -37,26 +37,24 @@ static void cc__sift_up(cc__heap_entry *heap, int32_t *hpos, int k, cc__heap_ent
  * before the four are compared, they arrive while the comparison runs. Only for a heap larger
  * than the caches, which then misses at every level; a small one would pay for nothing. */
 #define CC__HEAP_PREFETCH_MIN 32768
+static inline void cc__prefetch_children(const cc__heap_entry *heap, int c, int n)
+{
 #if defined(__GNUC__)
-#define CC__PREFETCH_CHILDREN(heap, c, n)                                                                          \
-    do {                                                                                                           \
-        if ((n) >= CC__HEAP_PREFETCH_MIN && 4 * (c) + 1 < (n)) {                                                   \
-            const cc__heap_entry *g_ = &(heap)[4 * (c) + 1];                                                       \
-            __builtin_prefetch(g_);                                                                                \
-            __builtin_prefetch(g_ + 4);                                                                            \
-            __builtin_prefetch(g_ + 8);                                                                            \
-            __builtin_prefetch(g_ + 12);                                                                           \
-        }                                                                                                          \
-    } while (0)
+    int g = 4 * c + 1, k;
+    if (n < CC__HEAP_PREFETCH_MIN)
+        return;
+    for (k = 0; k < 16 && g + k < n; k += 4) /* one line in four entries; none past the end */
+        __builtin_prefetch(&heap[g + k]);
 #else
-#define CC__PREFETCH_CHILDREN(heap, c, n) ((void)0)
+    (void)heap, (void)c, (void)n;
 #endif
+}
 
 static void cc__sift_down(cc__heap_entry *heap, int32_t *hpos, int n, int k, cc__heap_entry e)
 {
     for (;;) {
         int c = 4 * k + 1, m = c, q;
-        CC__PREFETCH_CHILDREN(heap, c, n);
+        cc__prefetch_children(heap, c, n);
         if (c + 4 <= n)
             m = cc__min4(heap, c);
         else if (c >= n)
