@@ -28,8 +28,8 @@ typedef struct cc__cand {
 } cc__cand;
 
 /* The solver's part of cc__try_circle, out of line: most pairs never get here. */
-CC__NOINLINE void cc__try_close(const cc_world *w, const cc__body *bi, const cc__body *bj, int j, cc_vec2 dp, cc_vec2 dv,
-                          double now, cc__cand *best)
+CC__NOINLINE void cc__try_close(const cc_world *w, const cc__body *bi, const cc__body *bj, int j, cc_vec2 dp,
+                                cc_vec2 dv, double now, cc__cand *best)
 {
     double t;
     cc_vec2 n;
