@@ -34,15 +34,73 @@ static inline int cc__circles_apart(const cc__body *a, const cc__body *b)
     return R2 > 0x1p-1000 && dx * dx + dy * dy > R2 * (1.0 + 0x1p-20);
 }
 
-/* The wall's box and the circle's box grown by a margin of 2^-30 of the numbers involved are
- * disjoint: the closest point on the wall lies in its box (to rounding), so the circle cannot
- * reach it. */
-static inline int cc__wall_apart(const cc__body *b, const cc_segment *g)
+/* A wall's box grown by 2^-30 of its coordinates' size, against which a circle's box grown by
+ * 2^-30 of its own numbers is tested: when they are disjoint, the circle cannot reach the wall
+ * (the closest point on the wall lies in its box to rounding, far inside these margins). */
+typedef struct cc__wall_box {
+    double x0, y0, x1, y1;
+} cc__wall_box;
+
+static cc__wall_box cc__wall_box_of(const cc_segment *g)
 {
-    double x0 = g->a.x < g->b.x ? g->a.x : g->b.x, x1 = g->a.x < g->b.x ? g->b.x : g->a.x;
-    double y0 = g->a.y < g->b.y ? g->a.y : g->b.y, y1 = g->a.y < g->b.y ? g->b.y : g->a.y;
-    double reach = b->r + 0x1p-30 * (b->r + fabs(b->px) + fabs(b->py) + fabs(x0) + fabs(x1) + fabs(y0) + fabs(y1));
-    return x0 - b->px > reach || b->px - x1 > reach || y0 - b->py > reach || b->py - y1 > reach;
+    cc__wall_box k;
+    double m;
+    k.x0 = g->a.x < g->b.x ? g->a.x : g->b.x;
+    k.x1 = g->a.x < g->b.x ? g->b.x : g->a.x;
+    k.y0 = g->a.y < g->b.y ? g->a.y : g->b.y;
+    k.y1 = g->a.y < g->b.y ? g->b.y : g->a.y;
+    m = 0x1p-30 * (fabs(k.x0) + fabs(k.x1) + fabs(k.y0) + fabs(k.y1));
+    k.x0 -= m;
+    k.x1 += m;
+    k.y0 -= m;
+    k.y1 += m;
+    return k;
+}
+
+/* The walls' boxes for one pass, the first CC__WALL_BOXES of them (the others are boxed when
+ * tested): a pass tests every wall for every circle. */
+#define CC__WALL_BOXES 32
+typedef struct cc__walls_boxed {
+    int n;
+    cc__wall_box box[CC__WALL_BOXES];
+} cc__walls_boxed;
+
+static void cc__box_walls(const cc_world *w, cc__walls_boxed *wb)
+{
+    const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
+    int s;
+    wb->n = w->n_segments < CC__WALL_BOXES ? w->n_segments : CC__WALL_BOXES;
+    for (s = 0; s < wb->n; s++)
+        wb->box[s] = cc__wall_box_of(&seg[s]);
+}
+
+/* Circle i against circle j when they may overlap: j brought to now (EXACT keeps lazy states). */
+static void cc__unoverlap_pair(cc_world *w, int i, int j)
+{
+    cc__body *B = CC__ARR(w, cc__body, off_body);
+    cc__advance_body(&B[j], w->now);
+    w->stats.pairs_tested++;
+    if (!cc__circles_apart(&B[i], &B[j]))
+        (void)cc__world_unoverlap(w, i, j, -1);
+}
+
+/* Circle i against every wall whose box its own reaches; wb: the pass's boxes, or NULL. */
+static void cc__unoverlap_walls(cc_world *w, int i, const cc__walls_boxed *wb)
+{
+    const cc__body *b = &CC__CARR(w, cc__body, off_body)[i];
+    const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
+    double reach;
+    int s;
+    if (w->n_segments == 0 || isinf(CC__CARR(w, cc__cold, off_cold)[i].m))
+        return;
+    reach = b->r + 0x1p-30 * (b->r + fabs(b->px) + fabs(b->py));
+    for (s = 0; s < w->n_segments; s++) {
+        cc__wall_box k = wb != NULL && s < wb->n ? wb->box[s] : cc__wall_box_of(&seg[s]);
+        w->stats.pairs_tested++;
+        if (k.x0 - b->px > reach || b->px - k.x1 > reach || k.y0 - b->py > reach || b->py - k.y1 > reach)
+            continue;
+        (void)cc__world_unoverlap(w, i, -1, s);
+    }
 }
 
 /* Pushes body i out of everything it overlaps (only_higher: circles of higher index only, for
@@ -51,15 +109,11 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
-    int j, s;
+    int j;
     if (!w->use_grid || (C[i].flags & CC__LARGE)) {
         for (j = only_higher ? i + 1 : 0; j < w->id_end; j++)
-            if (j != i && (C[j].flags & CC__ALIVE)) {
-                cc__advance_body(&B[j], w->now);
-                w->stats.pairs_tested++;
-                if (!cc__circles_apart(&B[i], &B[j]))
-                    (void)cc__world_unoverlap(w, i, j, -1);
-            }
+            if (j != i && (C[j].flags & CC__ALIVE))
+                cc__unoverlap_pair(w, i, j);
     } else {
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
         int32_t cx = B[i].cx, cy = B[i].cy, x, y;
@@ -67,25 +121,78 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
         for (y = cy - 1; y <= cy + 1; y++)
             for (x = cx - 1; x <= cx + 1; x++)
                 for (sl = cc__row_slot(w, x, y, sl, x == cx - 1), j = slot[sl]; j >= 0; j = B[j].next)
-                    if (B[j].cx == x && B[j].cy == y && j != i && (!only_higher || j > i)) {
-                        cc__advance_body(&B[j], w->now);
-                        w->stats.pairs_tested++;
-                        if (!cc__circles_apart(&B[i], &B[j]))
-                            (void)cc__world_unoverlap(w, i, j, -1);
-                    }
+                    if (B[j].cx == x && B[j].cy == y && j != i && (!only_higher || j > i))
+                        cc__unoverlap_pair(w, i, j);
         if (!only_higher)
             for (j = w->large_head; j >= 0; j = B[j].next)
                 if (j != i)
                     (void)cc__world_unoverlap(w, i, j, -1);
     }
-    if (!isinf(C[i].m)) {
-        const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
-        for (s = 0; s < w->n_segments; s++) {
-            w->stats.pairs_tested++;
-            if (!cc__wall_apart(&B[i], &seg[s]))
-                (void)cc__world_unoverlap(w, i, -1, s);
+    cc__unoverlap_walls(w, i, NULL);
+}
+
+/* SWEPT and DISCRETE, every step: every circle carried to now and filed in the cleared grid as
+ * cc__grid_insert files it (same cells, same order in each list), without the backward links
+ * that only EXACT's removals from the grid need. */
+static void cc__file_all(cc_world *w)
+{
+    cc__body *B = CC__ARR(w, cc__body, off_body);
+    cc__cold *C = CC__ARR(w, cc__cold, off_cold);
+    int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
+    int32_t *slot = CC__ARR(w, int32_t, off_slot);
+    int i;
+    for (i = 0; i < w->id_end; i++) {
+        cc__body *b = &B[i];
+        int32_t *head;
+        hpos[i] = -1;
+        if (!(C[i].flags & CC__ALIVE))
+            continue;
+        cc__advance_body(b, w->now);
+        b->cx = cc__cell_of(w, b->px);
+        b->cy = cc__cell_of(w, b->py);
+        C[i].flags &= ~CC__LARGE;
+        if (2.0 * b->r * 1.0625 > w->cs) {
+            C[i].flags |= CC__LARGE;
+            head = &w->large_head;
+        } else {
+            head = &slot[cc__grid_slot(w, b->cx, b->cy)];
         }
+        b->next = *head;
+        *head = i;
     }
+}
+
+/* SWEPT and DISCRETE, every step: the circles in the grid walked cell by cell in the order of
+ * the hash slots, not of storage (neighbouring cells have neighbouring slots, see cc__grid_slot,
+ * so what a circle looks at was mostly looked at just before: the pass runs from the caches),
+ * each pair once: a circle against those after it in its own cell and all those of the four
+ * cells ahead, (x+1, y) and the three of row y+1. */
+static void cc__unoverlap_cells(cc_world *w)
+{
+    cc__walls_boxed wb;
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+    uint32_t s;
+    int i, j;
+    cc__box_walls(w, &wb);
+    for (s = 0; s <= w->slot_mask; s++)
+        for (i = slot[s]; i >= 0; i = B[i].next) {
+            int32_t cx = B[i].cx, cy = B[i].cy, x;
+            uint32_t sl = 0;
+            for (j = B[i].next; j >= 0; j = B[j].next)
+                if (B[j].cx == cx && B[j].cy == cy)
+                    cc__unoverlap_pair(w, i, j);
+            if (cx < CC__CELL_MAX)
+                for (j = slot[cc__grid_slot(w, cx + 1, cy)]; j >= 0; j = B[j].next)
+                    if (B[j].cx == cx + 1 && B[j].cy == cy)
+                        cc__unoverlap_pair(w, i, j);
+            if (cy < CC__CELL_MAX)
+                for (x = cx - 1; x <= cx + 1; x++)
+                    for (sl = cc__row_slot(w, x, cy + 1, sl, x == cx - 1), j = slot[sl]; j >= 0; j = B[j].next)
+                        if (B[j].cx == x && B[j].cy == cy + 1)
+                            cc__unoverlap_pair(w, i, j);
+            cc__unoverlap_walls(w, i, &wb);
+        }
 }
 
 void cc__rebuild(cc_world *w)
@@ -99,16 +206,21 @@ void cc__rebuild(cc_world *w)
     w->heap_n = 0;
     if (w->use_grid)
         cc__grid_clear(w);
-    for (i = 0; i < w->id_end; i++) {
-        hpos[i] = -1;
-        if (!(C[i].flags & CC__ALIVE))
-            continue;
-        cc__advance_body(&B[i], w->now);
-        cc__grid_insert(w, i);
+    if (w->use_grid && w->mode != CC_MODE_EXACT) {
+        cc__file_all(w);
+        cc__unoverlap_cells(w);
+    } else {
+        for (i = 0; i < w->id_end; i++) {
+            hpos[i] = -1;
+            if (!(C[i].flags & CC__ALIVE))
+                continue;
+            cc__advance_body(&B[i], w->now);
+            cc__grid_insert(w, i);
+        }
+        for (i = 0; i < w->id_end; i++)
+            if ((C[i].flags & CC__ALIVE) && !(C[i].flags & CC__LARGE))
+                cc__unoverlap_body(w, i, 1);
     }
-    for (i = 0; i < w->id_end; i++)
-        if ((C[i].flags & CC__ALIVE) && !(C[i].flags & CC__LARGE))
-            cc__unoverlap_body(w, i, 1);
     for (j = w->large_head; j >= 0; j = B[j].next)
         for (i = 0; i < w->id_end; i++)
             if (i != j && (C[i].flags & CC__ALIVE))

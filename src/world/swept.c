@@ -93,6 +93,43 @@ static double cc__travel(const cc__body *b, double dt) { return (fabs(b->vx) + f
  * r_i + r_j + travel_i + travel_j <= r_i + rmax + 2 travel_i when travel_j <= travel_i. */
 static int cc__sweeps_from(double di, int i, double dj, int j) { return dj < di || (dj == di && j < i); }
 
+/* Body i (in the grid) against the large circles, the circles it sweeps (cc__sweeps_from) and
+ * the walls. */
+static void cc__sweep_body(cc_world *w, int i, double dt, double rmax)
+{
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+    const cc__body *b = &B[i];
+    double di, reach;
+    int32_t x0, x1, y0, y1, x, y;
+    uint32_t sl = 0;
+    int j;
+    for (j = w->large_head; j >= 0; j = B[j].next)
+        cc__pair(w, i, j, dt);
+    cc__walls(w, i, dt);
+    if ((di = cc__travel(b, dt)) == 0.0)
+        return; /* at rest: what meets it travels further and finds it */
+    /* margins far above the rounding of the cell bounds and of the sweep */
+    reach = (b->r + rmax + 2.0 * di) * (1.0 + 0x1p-20) + 0x1p-40 * (fabs(b->px) + fabs(b->py));
+    x0 = cc__cell_of(w, b->px - reach);
+    x1 = cc__cell_of(w, b->px + reach);
+    y0 = cc__cell_of(w, b->py - reach);
+    y1 = cc__cell_of(w, b->py + reach);
+    if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > (double)w->id_end) {
+        const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
+        for (j = 0; j < w->id_end; j++) /* more cells than there are bodies */
+            if ((C[j].flags & (CC__ALIVE | CC__LARGE)) == CC__ALIVE && j != i &&
+                cc__sweeps_from(di, i, cc__travel(&B[j], dt), j))
+                cc__pair(w, i, j, dt);
+        return;
+    }
+    for (y = y0; y <= y1; y++)
+        for (x = x0; x <= x1; x++)
+            for (sl = cc__row_slot(w, x, y, sl, x == x0), j = slot[sl]; j >= 0; j = B[j].next)
+                if (B[j].cx == x && B[j].cy == y && j != i && cc__sweeps_from(di, i, cc__travel(&B[j], dt), j))
+                    cc__pair(w, i, j, dt);
+}
+
 /* Finds each body's first impact in [now, now + dt]. */
 static void cc__find_impacts(cc_world *w, double dt)
 {
@@ -113,41 +150,17 @@ static void cc__find_impacts(cc_world *w, double dt)
             for (j = i + 1; j < w->id_end; j++)
                 if ((C[i].flags & CC__ALIVE) && (C[j].flags & CC__ALIVE))
                     cc__pair(w, i, j, dt);
+        for (i = 0; i < w->id_end; i++)
+            if (C[i].flags & CC__ALIVE)
+                cc__walls(w, i, dt);
     } else {
-        for (i = 0; i < w->id_end; i++) {
-            const cc__body *b = &B[i];
-            double di, reach;
-            int32_t x0, x1, y0, y1, x, y;
-            uint32_t sl = 0;
-            if ((C[i].flags & (CC__ALIVE | CC__LARGE)) != CC__ALIVE)
-                continue;
-            for (j = w->large_head; j >= 0; j = B[j].next)
-                cc__pair(w, i, j, dt);
-            if ((di = cc__travel(b, dt)) == 0.0)
-                continue; /* at rest: what meets it travels further and finds it */
-            /* margins far above the rounding of the cell bounds and of the sweep */
-            reach = (b->r + rmax + 2.0 * di) * (1.0 + 0x1p-20) + 0x1p-40 * (fabs(b->px) + fabs(b->py));
-            x0 = cc__grid_coord(w, b->px - reach);
-            x1 = cc__grid_coord(w, b->px + reach);
-            y0 = cc__grid_coord(w, b->py - reach);
-            y1 = cc__grid_coord(w, b->py + reach);
-            if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > (double)w->id_end) {
-                for (j = 0; j < w->id_end; j++) /* more cells than there are bodies */
-                    if ((C[j].flags & (CC__ALIVE | CC__LARGE)) == CC__ALIVE && j != i &&
-                        cc__sweeps_from(di, i, cc__travel(&B[j], dt), j))
-                        cc__pair(w, i, j, dt);
-                continue;
-            }
-            for (y = y0; y <= y1; y++)
-                for (x = x0; x <= x1; x++)
-                    for (sl = cc__row_slot(w, x, y, sl, x == x0), j = slot[sl]; j >= 0; j = B[j].next)
-                        if (B[j].cx == x && B[j].cy == y && j != i && cc__sweeps_from(di, i, cc__travel(&B[j], dt), j))
-                            cc__pair(w, i, j, dt);
-        }
+        uint32_t s;
+        /* in the order of the slots, not of storage: what a body looks at was mostly looked at
+         * just before (see cc__unoverlap_cells); the outcome does not depend on the order */
+        for (s = 0; s <= w->slot_mask; s++)
+            for (i = slot[s]; i >= 0; i = B[i].next)
+                cc__sweep_body(w, i, dt, rmax); /* large circles, immovable, meet no wall */
     }
-    for (i = 0; i < w->id_end; i++)
-        if (C[i].flags & CC__ALIVE)
-            cc__walls(w, i, dt);
     for (i = 0; i < w->id_end; i++)
         if (ev[i].kind != CC__EV_NONE)
             cc__heap_update(w, i, ev[i].t);
