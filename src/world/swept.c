@@ -6,8 +6,9 @@
  * again after a collision: a body's second impact within a step is missed, which is the mode's
  * trade. Finally every body is carried to the end of the step.
  *
- * Candidate pairs: each pair is swept once, by the body of the two that travels further in the
- * step, among the cells its own motion covers (cc__sweeps_from); bodies at rest sweep nothing. */
+ * Candidate pairs: each pair is swept once, from the neighbouring cells when both bodies move
+ * little in the step, else by the body that travels further, among the cells its own motion
+ * covers (cc__sweeps_from). */
 #include "world_internal.h"
 #include "scan.h"
 
@@ -87,28 +88,43 @@ static void cc__walls(cc_world *w, int i, double dt)
 /* How far body b may move along either axis in the step (an upper bound: |vx| + |vy| >= each). */
 static double cc__travel(const cc__body *b, double dt) { return (fabs(b->vx) + fabs(b->vy)) * dt; }
 
-/* Each pair is swept once, from the body that travels further in the step (the higher index
- * on a tie): a body at rest sweeps nothing, and the cells a body looks at cover its own motion,
- * not the fastest body's. Pair (i, j) can only meet if along each axis their centres are within
- * r_i + r_j + travel_i + travel_j <= r_i + rmax + 2 travel_i when travel_j <= travel_i. */
+/* Who sweeps which pair. Two bodies i, j meet only if along each axis their centres are within
+ * r_i + r_j + travel_i + travel_j. A "slow" body travels at most half the slack of a cell (its
+ * width less the largest diameter in it, less a margin far above rounding): two slow bodies
+ * that meet are then in the same or adjacent cells, and their pair is swept in a walk over the
+ * cells that sees each pair of adjacent cells once (as cc__unoverlap_cells does). A pair with a
+ * fast body is swept by the body of the two that travels further (the higher index on a tie),
+ * among the cells within r_i + rmax + 2 travel_i, which covers its own motion, not the fastest
+ * body's. */
 static int cc__sweeps_from(double di, int i, double dj, int j) { return dj < di || (dj == di && j < i); }
 
-/* Body i (in the grid) against the large circles, the circles it sweeps (cc__sweeps_from) and
- * the walls. */
-static void cc__sweep_body(cc_world *w, int i, double dt, double rmax)
+/* Body i (in the grid) against the large circles, the circles it sweeps and the walls. */
+static void cc__sweep_body(cc_world *w, int i, double dt, double rmax, double slow)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
     const cc__body *b = &B[i];
-    double di, reach;
+    double di = cc__travel(b, dt), reach;
     int32_t x0, x1, y0, y1, x, y;
     uint32_t sl = 0;
     int j;
     for (j = w->large_head; j >= 0; j = B[j].next)
         cc__pair(w, i, j, dt);
     cc__walls(w, i, dt);
-    if ((di = cc__travel(b, dt)) == 0.0)
-        return; /* at rest: what meets it travels further and finds it */
+    if (di <= slow) {
+        /* the slow after it in its own cell and in the four cells ahead: (x+1, y), row y+1 */
+        for (j = b->next; j >= 0; j = B[j].next)
+            if (B[j].cx == b->cx && B[j].cy == b->cy && cc__travel(&B[j], dt) <= slow)
+                cc__pair(w, i, j, dt);
+        for (sl = cc__row_slot(w, b->cx + 1, b->cy, sl, 1), j = slot[sl]; j >= 0; j = B[j].next)
+            if (B[j].cx == b->cx + 1 && B[j].cy == b->cy && cc__travel(&B[j], dt) <= slow)
+                cc__pair(w, i, j, dt);
+        for (x = b->cx - 1; x <= b->cx + 1; x++)
+            for (sl = cc__row_slot(w, x, b->cy + 1, sl, x == b->cx - 1), j = slot[sl]; j >= 0; j = B[j].next)
+                if (B[j].cx == x && B[j].cy == b->cy + 1 && cc__travel(&B[j], dt) <= slow)
+                    cc__pair(w, i, j, dt);
+        return;
+    }
     /* margins far above the rounding of the cell bounds and of the sweep */
     reach = (b->r + rmax + 2.0 * di) * (1.0 + 0x1p-20) + 0x1p-40 * (fabs(b->px) + fabs(b->py));
     x0 = cc__cell_of(w, b->px - reach);
@@ -118,16 +134,21 @@ static void cc__sweep_body(cc_world *w, int i, double dt, double rmax)
     if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > (double)w->id_end) {
         const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
         for (j = 0; j < w->id_end; j++) /* more cells than there are bodies */
-            if ((C[j].flags & (CC__ALIVE | CC__LARGE)) == CC__ALIVE && j != i &&
-                cc__sweeps_from(di, i, cc__travel(&B[j], dt), j))
-                cc__pair(w, i, j, dt);
+            if ((C[j].flags & (CC__ALIVE | CC__LARGE)) == CC__ALIVE && j != i) {
+                double dj = cc__travel(&B[j], dt);
+                if (dj <= slow || cc__sweeps_from(di, i, dj, j))
+                    cc__pair(w, i, j, dt);
+            }
         return;
     }
     for (y = y0; y <= y1; y++)
         for (x = x0; x <= x1; x++)
             for (sl = cc__row_slot(w, x, y, sl, x == x0), j = slot[sl]; j >= 0; j = B[j].next)
-                if (B[j].cx == x && B[j].cy == y && j != i && cc__sweeps_from(di, i, cc__travel(&B[j], dt), j))
-                    cc__pair(w, i, j, dt);
+                if (B[j].cx == x && B[j].cy == y && j != i) {
+                    double dj = cc__travel(&B[j], dt);
+                    if (dj <= slow || cc__sweeps_from(di, i, dj, j))
+                        cc__pair(w, i, j, dt);
+                }
 }
 
 /* Finds each body's first impact in [now, now + dt]. */
@@ -155,11 +176,12 @@ static void cc__find_impacts(cc_world *w, double dt)
                 cc__walls(w, i, dt);
     } else {
         uint32_t s;
+        double slow = 0.5 * (w->cs - 2.0 * rmax) * (1.0 - 0x1p-10);
         /* in the order of the slots, not of storage: what a body looks at was mostly looked at
          * just before (see cc__unoverlap_cells); the outcome does not depend on the order */
         for (s = 0; s <= w->slot_mask; s++)
             for (i = slot[s]; i >= 0; i = B[i].next)
-                cc__sweep_body(w, i, dt, rmax); /* large circles, immovable, meet no wall */
+                cc__sweep_body(w, i, dt, rmax, slow); /* large circles, immovable, meet no wall */
     }
     for (i = 0; i < w->id_end; i++)
         if (ev[i].kind != CC__EV_NONE)
