@@ -4,5 +4,6 @@
 cc_add_test(NAME test_world_api SOURCES test_world_api.c LABELS world)
 cc_add_test(NAME test_world_exact SOURCES test_world_exact.c LABELS world)
 cc_add_test(NAME test_world_modes SOURCES test_world_modes.c LABELS world)
+cc_add_test(NAME test_world_modes_grid SOURCES test_world_modes_grid.c LABELS world)
 cc_add_test(NAME test_world_near SOURCES test_world_near.c LABELS world)
 cc_add_test(NAME test_world_soak SOURCES test_world_soak.c LABELS world TIMEOUT 300)
