@@ -388,6 +388,11 @@ typedef struct cc_world_stats {
 CC_API int cc_world_get_stats(const cc_world *w, cc_world_stats *out);
 
 /* ---- Single precision: the same contract in float ------------------------------------------ */
+/* Field for field the double types with float, and each function the double one's twin (same
+ * codes, same outputs left untouched, same semantics), computed in float only: for
+ * microcontrollers with a single-precision FPU. Differences: cc_respondf and
+ * cc_respond_segmentf accept a normal whose length is within 1e-4 of 1 (double: 1e-6), and the
+ * accuracy is that of float (docs/NUMERICS.md gives the measured error of each). */
 
 typedef struct cc_vec2f {
     float x, y;
