@@ -34,46 +34,6 @@ static inline int cc__circles_apart(const cc__body *a, const cc__body *b)
     return R2 > 0x1p-1000 && dx * dx + dy * dy > R2 * (1.0 + 0x1p-20);
 }
 
-/* A wall's box grown by 2^-30 of its coordinates' size, against which a circle's box grown by
- * 2^-30 of its own numbers is tested: when they are disjoint, the circle cannot reach the wall
- * (the closest point on the wall lies in its box to rounding, far inside these margins). */
-typedef struct cc__wall_box {
-    double x0, y0, x1, y1;
-} cc__wall_box;
-
-static cc__wall_box cc__wall_box_of(const cc_segment *g)
-{
-    cc__wall_box k;
-    double m;
-    k.x0 = g->a.x < g->b.x ? g->a.x : g->b.x;
-    k.x1 = g->a.x < g->b.x ? g->b.x : g->a.x;
-    k.y0 = g->a.y < g->b.y ? g->a.y : g->b.y;
-    k.y1 = g->a.y < g->b.y ? g->b.y : g->a.y;
-    m = 0x1p-30 * (fabs(k.x0) + fabs(k.x1) + fabs(k.y0) + fabs(k.y1));
-    k.x0 -= m;
-    k.x1 += m;
-    k.y0 -= m;
-    k.y1 += m;
-    return k;
-}
-
-/* The walls' boxes for one pass, the first CC__WALL_BOXES of them (the others are boxed when
- * tested): a pass tests every wall for every circle. */
-#define CC__WALL_BOXES 32
-typedef struct cc__walls_boxed {
-    int n;
-    cc__wall_box box[CC__WALL_BOXES];
-} cc__walls_boxed;
-
-static void cc__box_walls(const cc_world *w, cc__walls_boxed *wb)
-{
-    const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
-    int s;
-    wb->n = w->n_segments < CC__WALL_BOXES ? w->n_segments : CC__WALL_BOXES;
-    for (s = 0; s < wb->n; s++)
-        wb->box[s] = cc__wall_box_of(&seg[s]);
-}
-
 /* Circle i against circle j when they may overlap: j brought to now (EXACT keeps lazy states). */
 static void cc__unoverlap_pair(cc_world *w, int i, int j)
 {
@@ -88,16 +48,19 @@ static void cc__unoverlap_pair(cc_world *w, int i, int j)
 static void cc__unoverlap_walls(cc_world *w, int i, const cc__walls_boxed *wb)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[i];
-    const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
     double reach;
     int s;
     if (w->n_segments == 0 || isinf(CC__CARR(w, cc__cold, off_cold)[i].m))
         return;
+    /* the box of the wall and that of the circle, each grown by 2^-30 of its numbers, are
+     * disjoint: the closest point on the wall lies in the wall's box (to rounding, far inside
+     * the margins), so the circle cannot reach it */
     reach = b->r + 0x1p-30 * (b->r + fabs(b->px) + fabs(b->py));
     for (s = 0; s < w->n_segments; s++) {
-        cc__wall_box k = wb != NULL && s < wb->n ? wb->box[s] : cc__wall_box_of(&seg[s]);
+        cc__wall_box k = cc__wall_box_at(w, wb, s);
         w->stats.pairs_tested++;
-        if (k.x0 - b->px > reach || b->px - k.x1 > reach || k.y0 - b->py > reach || b->py - k.y1 > reach)
+        if (k.x0 - k.m - b->px > reach || b->px - k.x1 - k.m > reach || k.y0 - k.m - b->py > reach ||
+            b->py - k.y1 - k.m > reach)
             continue;
         (void)cc__world_unoverlap(w, i, -1, s);
     }

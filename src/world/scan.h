@@ -1,10 +1,13 @@
-/* Walking the grid's cells in SWEPT and DISCRETE scans. The slot of the next cell to the
- * right is one more than this one's while both lie in the same tile (see cc__grid_slot), so a
- * row costs one hash per tile it touches instead of one per cell. */
+/* What SWEPT's and DISCRETE's passes over every circle share: walking rows of grid cells (the
+ * slot of the next cell to the right is one more than this one's while both lie in the same
+ * tile, see cc__grid_slot, so a row costs one hash per tile it touches instead of one per
+ * cell), cells without a call to floor, and the walls' boxes. */
 #ifndef CC_WORLD_SCAN_H
 #define CC_WORLD_SCAN_H
 
 #include "world_internal.h"
+
+#include <math.h>
 
 /* The slot of cell (x, y), given the slot s of cell (x - 1, y) (ignored when x is the first
  * cell of the row: first != 0). */
@@ -26,6 +29,47 @@ static inline int32_t cc__cell_of(const cc_world *w, double x)
         return CC__CELL_MAX;
     k = (int32_t)c; /* towards zero: one less for a negative fraction */
     return k - (c < (double)k);
+}
+
+/* A wall's box, and 2^-30 of the size of its coordinates (a margin for tests that must be
+ * conservative). A pass that tests every circle against every wall boxes the first
+ * CC__WALL_BOXES walls once (cc__box_walls) and the others when tested. */
+typedef struct cc__wall_box {
+    double x0, y0, x1, y1, m;
+} cc__wall_box;
+
+static inline cc__wall_box cc__wall_box_of(const cc_segment *g)
+{
+    cc__wall_box k;
+    k.x0 = g->a.x < g->b.x ? g->a.x : g->b.x;
+    k.x1 = g->a.x < g->b.x ? g->b.x : g->a.x;
+    k.y0 = g->a.y < g->b.y ? g->a.y : g->b.y;
+    k.y1 = g->a.y < g->b.y ? g->b.y : g->a.y;
+    k.m = 0x1p-30 * (fabs(k.x0) + fabs(k.x1) + fabs(k.y0) + fabs(k.y1));
+    return k;
+}
+
+#define CC__WALL_BOXES 32
+typedef struct cc__walls_boxed {
+    int n;
+    cc__wall_box box[CC__WALL_BOXES];
+} cc__walls_boxed;
+
+static inline void cc__box_walls(const cc_world *w, cc__walls_boxed *wb)
+{
+    const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
+    int s;
+    wb->n = w->n_segments < CC__WALL_BOXES ? w->n_segments : CC__WALL_BOXES;
+    for (s = 0; s < wb->n; s++)
+        wb->box[s] = cc__wall_box_of(&seg[s]);
+}
+
+/* Wall s's box, from the pass's boxes when it has them. */
+static inline cc__wall_box cc__wall_box_at(const cc_world *w, const cc__walls_boxed *wb, int s)
+{
+    if (wb != NULL && s < wb->n)
+        return wb->box[s];
+    return cc__wall_box_of(&CC__CARR(w, cc_segment, off_seg)[s]);
 }
 
 #endif

@@ -53,7 +53,7 @@ static void cc__pair(cc_world *w, int i, int j, double dt)
     cc__offer(w, j, w->now + t, CC__EV_CIRCLE, i);
 }
 
-static void cc__walls(cc_world *w, int i, double dt)
+static void cc__walls(cc_world *w, int i, double dt, const cc__walls_boxed *wb)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[i];
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
@@ -65,20 +65,19 @@ static void cc__walls(cc_world *w, int i, double dt)
     cc_contact k;
     int s;
     double m = CC__CARR(w, cc__cold, off_cold)[i].m;
-    if (isinf(m) || (b->vx == 0.0 && b->vy == 0.0))
+    if (w->n_segments == 0 || isinf(m) || (b->vx == 0.0 && b->vy == 0.0))
         return;
     c.pos = cc__v(b->px, b->py);
     c.vel = cc__v(b->vx, b->vy);
     c.radius = b->r;
     c.mass = m;
     for (s = 0; s < w->n_segments; s++) {
-        const cc_segment *g = &seg[s];
+        cc__wall_box g = cc__wall_box_at(w, wb, s);
         /* the path's box grown by the radius against the wall's box */
-        if ((g->a.x < g->b.x ? g->a.x : g->b.x) > x1 + b->r || (g->a.x > g->b.x ? g->a.x : g->b.x) < x0 - b->r ||
-            (g->a.y < g->b.y ? g->a.y : g->b.y) > y1 + b->r || (g->a.y > g->b.y ? g->a.y : g->b.y) < y0 - b->r)
+        if (g.x0 > x1 + b->r || g.x1 < x0 - b->r || g.y0 > y1 + b->r || g.y1 < y0 - b->r)
             continue;
         w->stats.pairs_tested++;
-        if (cc_sweep_segment(&c, g, dt, &k) <= CC_MISS ||
+        if (cc_sweep_segment(&c, &seg[s], dt, &k) <= CC_MISS ||
             !cc__approaching(w, cc__dot(c.vel, k.normal), fabs(c.vel.x) + fabs(c.vel.y)))
             continue;
         cc__offer(w, i, w->now + k.t, CC__EV_SEGMENT, s);
@@ -99,7 +98,7 @@ static double cc__travel(const cc__body *b, double dt) { return (fabs(b->vx) + f
 static int cc__sweeps_from(double di, int i, double dj, int j) { return dj < di || (dj == di && j < i); }
 
 /* Body i (in the grid) against the large circles, the circles it sweeps and the walls. */
-static void cc__sweep_body(cc_world *w, int i, double dt, double rmax, double slow)
+static void cc__sweep_body(cc_world *w, int i, double dt, double rmax, double slow, const cc__walls_boxed *wb)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
@@ -110,7 +109,7 @@ static void cc__sweep_body(cc_world *w, int i, double dt, double rmax, double sl
     int j;
     for (j = w->large_head; j >= 0; j = B[j].next)
         cc__pair(w, i, j, dt);
-    cc__walls(w, i, dt);
+    cc__walls(w, i, dt, wb);
     if (di <= slow) {
         /* the slow after it in its own cell and in the four cells ahead: (x+1, y), row y+1 */
         for (j = b->next; j >= 0; j = B[j].next)
@@ -173,15 +172,17 @@ static void cc__find_impacts(cc_world *w, double dt)
                     cc__pair(w, i, j, dt);
         for (i = 0; i < w->id_end; i++)
             if (C[i].flags & CC__ALIVE)
-                cc__walls(w, i, dt);
+                cc__walls(w, i, dt, NULL);
     } else {
         uint32_t s;
+        cc__walls_boxed wb;
         double slow = 0.5 * (w->cs - 2.0 * rmax) * (1.0 - 0x1p-10);
+        cc__box_walls(w, &wb);
         /* in the order of the slots, not of storage: what a body looks at was mostly looked at
          * just before (see cc__unoverlap_cells); the outcome does not depend on the order */
         for (s = 0; s <= w->slot_mask; s++)
             for (i = slot[s]; i >= 0; i = B[i].next)
-                cc__sweep_body(w, i, dt, rmax, slow); /* large circles, immovable, meet no wall */
+                cc__sweep_body(w, i, dt, rmax, slow, &wb); /* large circles, immovable, meet no wall */
     }
     for (i = 0; i < w->id_end; i++)
         if (ev[i].kind != CC__EV_NONE)
