@@ -3,7 +3,9 @@
  * masses; a circle against a wall moves out along the wall's normal) and resolves the contact
  * if the pair approaches. What one pass leaves (chains of overlaps) heals by itself: an
  * overlapping pair that approaches is a contact now, one that separates is left to drift apart.
- * Also the full rebuild of EXACT mode's grid and predictions. */
+ * Also the rebuild of the grid: EXACT's (with every prediction) when something requires it,
+ * SWEPT's and DISCRETE's at every step (filing and one pass over neighbouring cells, with quick
+ * rejects before the exact tests: about what a plain cell-list step costs). */
 #include "world_internal.h"
 #include "scan.h"
 
@@ -50,7 +52,7 @@ static void cc__unoverlap_walls(cc_world *w, int i, const cc__walls_boxed *wb)
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[i];
     double reach;
     int s;
-    if (w->n_segments == 0 || isinf(CC__CARR(w, cc__cold, off_cold)[i].m))
+    if (w->n_segments == 0)
         return;
     /* the box of the wall and that of the circle, each grown by 2^-30 of its numbers, are
      * disjoint: the closest point on the wall lies in the wall's box (to rounding, far inside
@@ -58,10 +60,12 @@ static void cc__unoverlap_walls(cc_world *w, int i, const cc__walls_boxed *wb)
     reach = b->r + 0x1p-30 * (b->r + fabs(b->px) + fabs(b->py));
     for (s = 0; s < w->n_segments; s++) {
         cc__wall_box k = cc__wall_box_at(w, wb, s);
-        w->stats.pairs_tested++;
         if (k.x0 - k.m - b->px > reach || b->px - k.x1 - k.m > reach || k.y0 - k.m - b->py > reach ||
             b->py - k.y1 - k.m > reach)
             continue;
+        if (isinf(CC__CARR(w, cc__cold, off_cold)[i].m))
+            return; /* immovable: walls do not hold it */
+        w->stats.pairs_tested++; /* as SWEPT counts walls: those the box test lets through */
         (void)cc__world_unoverlap(w, i, -1, s);
     }
 }
@@ -146,7 +150,7 @@ static void cc__unoverlap_cells(cc_world *w)
                 if (B[j].cx == cx && B[j].cy == cy)
                     cc__unoverlap_pair(w, i, j);
             if (cx < CC__CELL_MAX)
-                for (j = slot[cc__grid_slot(w, cx + 1, cy)]; j >= 0; j = B[j].next)
+                for (j = slot[cc__row_slot(w, cx + 1, cy, s, 0)]; j >= 0; j = B[j].next)
                     if (B[j].cx == cx + 1 && B[j].cy == cy)
                         cc__unoverlap_pair(w, i, j);
             if (cy < CC__CELL_MAX)

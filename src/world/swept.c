@@ -57,25 +57,30 @@ static void cc__walls(cc_world *w, int i, double dt, const cc__walls_boxed *wb)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[i];
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
-    double x0 = b->px < b->px + b->vx * dt ? b->px : b->px + b->vx * dt;
-    double x1 = b->px + (b->px + b->vx * dt) - x0;
-    double y0 = b->py < b->py + b->vy * dt ? b->py : b->py + b->vy * dt;
-    double y1 = b->py + (b->py + b->vy * dt) - y0;
+    double x0, x1, y0, y1;
     cc_circle c;
     cc_contact k;
-    int s;
-    double m = CC__CARR(w, cc__cold, off_cold)[i].m;
-    if (w->n_segments == 0 || isinf(m) || (b->vx == 0.0 && b->vy == 0.0))
+    int s, first = 1;
+    if (w->n_segments == 0 || (b->vx == 0.0 && b->vy == 0.0))
         return;
-    c.pos = cc__v(b->px, b->py);
-    c.vel = cc__v(b->vx, b->vy);
-    c.radius = b->r;
-    c.mass = m;
+    /* the path's box grown by the radius */
+    x0 = (b->px < b->px + b->vx * dt ? b->px : b->px + b->vx * dt) - b->r;
+    x1 = (b->px < b->px + b->vx * dt ? b->px + b->vx * dt : b->px) + b->r;
+    y0 = (b->py < b->py + b->vy * dt ? b->py : b->py + b->vy * dt) - b->r;
+    y1 = (b->py < b->py + b->vy * dt ? b->py + b->vy * dt : b->py) + b->r;
     for (s = 0; s < w->n_segments; s++) {
         cc__wall_box g = cc__wall_box_at(w, wb, s);
-        /* the path's box grown by the radius against the wall's box */
-        if (g.x0 > x1 + b->r || g.x1 < x0 - b->r || g.y0 > y1 + b->r || g.y1 < y0 - b->r)
+        if (g.x0 > x1 || g.x1 < x0 || g.y0 > y1 || g.y1 < y0)
             continue;
+        if (first) { /* the body's cold part only when a wall is near */
+            c.mass = CC__CARR(w, cc__cold, off_cold)[i].m;
+            if (isinf(c.mass))
+                return;
+            c.pos = cc__v(b->px, b->py);
+            c.vel = cc__v(b->vx, b->vy);
+            c.radius = b->r;
+            first = 0;
+        }
         w->stats.pairs_tested++;
         if (cc_sweep_segment(&c, &seg[s], dt, &k) <= CC_MISS ||
             !cc__approaching(w, cc__dot(c.vel, k.normal), fabs(c.vel.x) + fabs(c.vel.y)))
@@ -182,7 +187,7 @@ static void cc__find_impacts(cc_world *w, double dt)
          * just before (see cc__unoverlap_cells); the outcome does not depend on the order */
         for (s = 0; s <= w->slot_mask; s++)
             for (i = slot[s]; i >= 0; i = B[i].next)
-                cc__sweep_body(w, i, dt, rmax, slow, &wb); /* large circles, immovable, meet no wall */
+                cc__sweep_body(w, i, dt, rmax, slow, &wb); /* (large circles are immovable: no walls) */
     }
     for (i = 0; i < w->id_end; i++)
         if (ev[i].kind != CC__EV_NONE)
