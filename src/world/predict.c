@@ -44,11 +44,19 @@ CC__NOINLINE void cc__try_close(const cc_world *w, const cc__body *bi, const cc_
     best->pcount = bj->count;
 }
 
+/* What cc__predict_alone looks for besides the hit: a circle other than partner within the
+ * radius sum + reach now (near is set). In the plain prediction check is 0 and this compiles
+ * away. */
+typedef struct cc__alone {
+    int partner, near;
+    double reach;
+} cc__alone;
+
 /* Contact of moving body i (at now) with circle j: a hit approaching faster than rounding, or
  * an overlap left by rounding whose bodies approach (a contact now). Inline: the scans call it
  * for every neighbour, and most are rejected by the first test. */
-CC__INLINE_ALWAYS void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body *bi, int i_fixed, int j,
-                                      double now, cc__cand *best, uint64_t *tests)
+CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, const cc__body *bi, int i_fixed, int j,
+                                        double now, cc__cand *best, uint64_t *tests, int check, cc__alone *al)
 {
     const cc__body *bj = &B[j];
     double dt = now - bj->t, R, dv2, cr;
@@ -59,6 +67,10 @@ CC__INLINE_ALWAYS void cc__try_circle(const cc_world *w, const cc__body *B, cons
     dp.y = (bj->py + bj->vy * dt) - bi->py;
     dv.x = bj->vx - bi->vx;
     dv.y = bj->vy - bi->vy;
+    if (check && j != al->partner) { /* the same distance near.c computes, against a larger reach */
+        double Rn = bi->r + bj->r + al->reach;
+        al->near |= dp.x * dp.x + dp.y * dp.y <= Rn * Rn;
+    }
     if (!(dp.x * dv.x + dp.y * dv.y < 0.0))
         return; /* never closer than now */
     ++*tests;
@@ -70,6 +82,12 @@ CC__INLINE_ALWAYS void cc__try_circle(const cc_world *w, const cc__body *B, cons
     if (cr * cr > 1.0000001 * dv2 * R * R && dp.x * dp.x + dp.y * dp.y > R * R)
         return;
     cc__try_close(w, bi, bj, j, dp, dv, now, best);
+}
+
+CC__INLINE_ALWAYS void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body *bi, int i_fixed, int j,
+                                      double now, cc__cand *best, uint64_t *tests)
+{
+    cc__try_circle_x(w, B, bi, i_fixed, j, now, best, tests, 0, NULL);
 }
 
 /* Walls within reach before min(best, t_cross). */
@@ -147,8 +165,9 @@ static double cc__cross_time(const cc_world *w, const cc__body *b, int32_t *dir)
  * a tile (cc__grid_slot) a row's slots are consecutive and rows are a tile's width apart, so
  * the hash is computed only where a tile begins. One flat loop, the world's fields read once:
  * the scans are the hot path. */
-static void cc__scan_block(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0, int32_t y0, int nx,
-                           int ny, cc__cand *best, uint64_t *tests)
+CC__INLINE_ALWAYS void cc__scan_block_x(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0,
+                                        int32_t y0, int nx, int ny, cc__cand *best, uint64_t *tests, int check,
+                                        cc__alone *al)
 {
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
     const uint32_t mx = (1u << w->tile_bits_x) - 1u, my = (1u << w->tile_bits_y) - 1u, mask = w->slot_mask;
@@ -165,9 +184,21 @@ static void cc__scan_block(const cc_world *w, const cc__body *B, int i, int i_fi
                 s = ((uint32_t)x & mx) ? (s + 1u) & mask : cc__grid_slot(w, x, y);
             for (j = slot[s]; j >= 0; j = B[j].next)
                 if (B[j].cx == x && B[j].cy == y && j != i)
-                    cc__try_circle(w, B, &B[i], i_fixed, j, now, best, tests);
+                    cc__try_circle_x(w, B, &B[i], i_fixed, j, now, best, tests, check, al);
         }
     }
+}
+
+static void cc__scan_block(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0, int32_t y0, int nx,
+                           int ny, cc__cand *best, uint64_t *tests)
+{
+    cc__scan_block_x(w, B, i, i_fixed, x0, y0, nx, ny, best, tests, 0, NULL);
+}
+
+static void cc__scan_block_alone(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0, int32_t y0,
+                                 cc__cand *best, uint64_t *tests, cc__alone *al)
+{
+    cc__scan_block_x(w, B, i, i_fixed, x0, y0, 3, 3, best, tests, 1, al);
 }
 
 /* Stores the prediction and queues the body by its earlier event. */
@@ -189,7 +220,7 @@ static void cc__finish(cc_world *w, int i, cc__cand *best, double t_cross, int32
         cc__heap_update(w, i, best->t < t_cross ? best->t : t_cross);
 }
 
-void cc__predict(cc_world *w, int i)
+CC__INLINE_ALWAYS void cc__predict_x(cc_world *w, int i, int check, cc__alone *al)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
@@ -214,16 +245,34 @@ void cc__predict(cc_world *w, int i)
     if (!w->use_grid || (C[i].flags & CC__LARGE)) {
         for (j = 0; j < w->id_end; j++)
             if (j != i && (C[j].flags & CC__ALIVE))
-                cc__try_circle(w, B, bi, fixed, j, w->now, &best, &tests);
+                cc__try_circle_x(w, B, bi, fixed, j, w->now, &best, &tests, check, al);
     } else {
-        cc__scan_block(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, &best, &tests);
+        if (check)
+            cc__scan_block_alone(w, B, i, fixed, bi->cx - 1, bi->cy - 1, &best, &tests, al);
+        else
+            cc__scan_block(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, &best, &tests);
         for (j = w->large_head; j >= 0; j = B[j].next)
             if (j != i)
-                cc__try_circle(w, B, bi, fixed, j, w->now, &best, &tests);
+                cc__try_circle_x(w, B, bi, fixed, j, w->now, &best, &tests, check, al);
         t_cross = cc__cross_time(w, bi, &dir);
     }
     w->stats.pairs_tested += tests;
     cc__finish(w, i, &best, t_cross, dir);
+}
+
+void cc__predict(cc_world *w, int i) { cc__predict_x(w, i, 0, NULL); }
+
+int cc__predict_alone(cc_world *w, int i, int partner, double reach)
+{
+    cc__alone al;
+    const cc__body *bi = &CC__CARR(w, cc__body, off_body)[i];
+    al.partner = partner;
+    al.near = 0;
+    al.reach = reach;
+    if (bi->vx == 0.0 && bi->vy == 0.0)
+        return 1; /* predicts nothing, so it scans nothing: the caller takes the general path */
+    cc__predict_x(w, i, 1, &al);
+    return al.near;
 }
 
 void cc__predict_crossed(cc_world *w, int i, int dir)

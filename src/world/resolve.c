@@ -66,13 +66,15 @@ cc_contact cc__world_wall_contact(const cc_circle *c, const cc_segment *s)
     return k;
 }
 
-static int cc__resolve_one(cc_world *w, const cc__touch *tc)
+/* held != NULL (two circles only): the report is stored in *held and *held_impulse instead of
+ * made, for a caller that makes it later (cc__world_resolve_pair_held). */
+static int cc__resolve_one(cc_world *w, const cc__touch *tc, cc_contact *held, double *held_impulse)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
     cc__body *ba = &B[tc->a];
     cc_circle ca = cc__as_circle(w, tc->a);
     cc_contact k;
-    double approach;
+    double approach, impulse;
     if (tc->b >= 0) {
         cc__body *bb = &B[tc->b];
         cc_circle cb = cc__as_circle(w, tc->b);
@@ -86,9 +88,14 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc)
         approach = -cc__dot(cc__sub(cb.vel, ca.vel), k.normal);
         if (cc_respond(&ca, &cb, &k, cc__restitution_for(w, approach)) != CC_HIT)
             return 0;
-        cc__world_report(w, tc->a, tc->b, -1, &k,
-                   isinf(ca.mass) ? cb.mass * cc__length(cc__sub(cb.vel, cc__v(bb->vx, bb->vy)))
-                                  : ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy))));
+        impulse = isinf(ca.mass) ? cb.mass * cc__length(cc__sub(cb.vel, cc__v(bb->vx, bb->vy)))
+                                 : ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy)));
+        if (held != NULL) {
+            *held = k;
+            *held_impulse = impulse;
+        } else {
+            cc__world_report(w, tc->a, tc->b, -1, &k, impulse);
+        }
         if (ca.vel.x != ba->vx || ca.vel.y != ba->vy) {
             ba->vx = ca.vel.x;
             ba->vy = ca.vel.y;
@@ -138,8 +145,13 @@ int cc__world_resolve_pairwise(cc_world *w, const cc__touch *touch, int n)
 {
     int i, hits = 0;
     for (i = 0; i < n; i++)
-        hits += cc__resolve_one(w, &touch[i]);
+        hits += cc__resolve_one(w, &touch[i], NULL, NULL);
     return hits;
+}
+
+int cc__world_resolve_pair_held(cc_world *w, const cc__touch *tc, cc_contact *k, double *impulse)
+{
+    return tc->b >= 0 ? cc__resolve_one(w, tc, k, impulse) : 0;
 }
 
 /* EXACT resolves each impact with everything touching it at that instant (simultaneous.c);

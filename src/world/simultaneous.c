@@ -199,6 +199,37 @@ static void cc__clu_gather(cc__clu *c)
     }
 }
 
+/* For exact.c's plain pair impact of movable circles a and b: twice the reach cc__clu_gather
+ * gives near.c for each of them before anything joins the cluster (the same terms, velocities
+ * before the impact), so that a circle near.c would visit is surely within it; and whether
+ * near.c could visit a wall for either (its box test, with that larger reach): 1 when maybe. */
+int cc__cluster_pair_reach(const cc_world *w, int a, int b, double *reach_a, double *reach_b)
+{
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
+    double va = cc__inf_norm(B[a].vx, B[a].vy), vb = cc__inf_norm(B[b].vx, B[b].vy);
+    double vmax = va > vb ? va : vb, rmax = w->cs, common;
+    double ax = cc__bx(&B[a], w->now), ay = cc__by(&B[a], w->now), bx = cc__bx(&B[b], w->now),
+           by = cc__by(&B[b], w->now), ga, gb;
+    int s;
+    rmax = B[a].r > rmax ? B[a].r : rmax;
+    rmax = B[b].r > rmax ? B[b].r : rmax;
+    common = 4.0 * rmax + 2.0 * vmax * fabs(w->now);
+    *reach_a = 8.0 * CC__CLU_TOL * (2.0 * cc__inf_norm(ax, ay) + common);
+    *reach_b = 8.0 * CC__CLU_TOL * (2.0 * cc__inf_norm(bx, by) + common);
+    ga = B[a].r + *reach_a;
+    gb = B[b].r + *reach_b;
+    for (s = 0; s < w->n_segments; s++) {
+        const cc_segment *q = &seg[s];
+        double x0 = q->a.x < q->b.x ? q->a.x : q->b.x, x1 = q->a.x < q->b.x ? q->b.x : q->a.x;
+        double y0 = q->a.y < q->b.y ? q->a.y : q->b.y, y1 = q->a.y < q->b.y ? q->b.y : q->a.y;
+        if (!(ax + ga < x0 || ax - ga > x1 || ay + ga < y0 || ay - ga > y1) ||
+            !(bx + gb < x0 || bx - gb > x1 || by + gb < y0 || by - gb > y1))
+            return 1;
+    }
+    return 0;
+}
+
 /* The world's own test of an impact: does touch t still approach? */
 static int cc__still_approaching(const cc_world *w, const cc__touch *t)
 {

@@ -153,6 +153,11 @@ static inline uint32_t cc__grid_slot(const cc_world *w, int32_t cx, int32_t cy)
 void cc__predict(cc_world *w, int id);
 /* after body id crossed into a new cell through side dir: only the new cells are searched */
 void cc__predict_crossed(cc_world *w, int id, int dir);
+/* cc__predict for a movable body i at the instant of its impact with circle partner, that
+ * also tells whether any other circle lies within the radius sum + reach of it now (1) or none
+ * does (0): the neighbour scan that the prediction makes anyway answers the gathering's
+ * question (simultaneous.c) for free. */
+int cc__predict_alone(cc_world *w, int i, int partner, double reach);
 /* re-predicts every movable body that could meet body id (its neighbourhood) */
 void cc__predict_neighbours(cc_world *w, int id);
 /* A large world (EXACT): asks the memory for what the next few events will read, so that it
@@ -202,6 +207,13 @@ size_t cc__cluster_block(int max_circles, int mode, int *bodies, int *contacts);
 int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n);
 /* resolve.c's pairwise resolution, and the helpers the cluster path shares with it */
 int cc__world_resolve_pairwise(cc_world *w, const cc__touch *touch, int n);
+/* cc__world_resolve_pairwise of one impact of two circles, the report held back: the contact
+ * and impulse for cc__world_report are stored in *k and *impulse instead (when it returns 1). */
+int cc__world_resolve_pair_held(cc_world *w, const cc__touch *tc, cc_contact *k, double *impulse);
+/* EXACT's plain pair impact of movable circles a and b (exact.c): bounds on the reach within
+ * which the gathering of the cluster {a, b} looks for circles touching a and b now, and whether
+ * a wall lies near enough to either that the gathering could list it (1: maybe, 0: surely not). */
+int cc__cluster_pair_reach(const cc_world *w, int a, int b, double *reach_a, double *reach_b);
 void cc__world_report(cc_world *w, int a, int b, int seg, const cc_contact *k, double impulse);
 void cc__world_overlap_seen(cc_world *w, double depth);
 cc_contact cc__world_wall_contact(const cc_circle *c, const cc_segment *s);
