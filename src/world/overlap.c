@@ -51,17 +51,18 @@ static void cc__unoverlap_walls(cc_world *w, int i, const cc__walls_boxed *wb)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[i];
     double reach;
-    int s;
+    int s, nb = wb != NULL ? wb->n : 0;
     if (w->n_segments == 0)
         return;
-    /* the box of the wall and that of the circle, each grown by 2^-30 of its numbers, are
-     * disjoint: the closest point on the wall lies in the wall's box (to rounding, far inside
-     * the margins), so the circle cannot reach it */
+    /* the wall's box and the circle's, each grown by 2^-30 of its numbers, are disjoint: the
+     * closest point on the wall lies in the wall's box (to rounding, far inside the margins),
+     * so the circle cannot reach it */
     reach = b->r + 0x1p-30 * (b->r + fabs(b->px) + fabs(b->py));
     for (s = 0; s < w->n_segments; s++) {
-        cc__wall_box k = cc__wall_box_at(w, wb, s);
-        if (k.x0 - k.m - b->px > reach || b->px - k.x1 - k.m > reach || k.y0 - k.m - b->py > reach ||
-            b->py - k.y1 - k.m > reach)
+        cc__wall_box tmp;
+        const cc__wall_box *k = cc__wall_box_at(w, wb, nb, s, &tmp);
+        /* | not ||: one branch, taken for most walls */
+        if ((k->gx0 - b->px > reach) | (b->px - k->gx1 > reach) | (k->gy0 - b->py > reach) | (b->py - k->gy1 > reach))
             continue;
         if (isinf(CC__CARR(w, cc__cold, off_cold)[i].m))
             return; /* immovable: walls do not hold it */

@@ -31,21 +31,27 @@ static inline int32_t cc__cell_of(const cc_world *w, double x)
     return k - (c < (double)k);
 }
 
-/* A wall's box, and 2^-30 of the size of its coordinates (a margin for tests that must be
- * conservative). A pass that tests every circle against every wall boxes the first
- * CC__WALL_BOXES walls once (cc__box_walls) and the others when tested. */
+/* A wall's box, exact and grown by 2^-30 of the size of its coordinates (for tests that must
+ * be conservative to far above rounding). A pass that tests every circle against every wall
+ * boxes the first CC__WALL_BOXES walls once (cc__box_walls) and the others when tested. */
 typedef struct cc__wall_box {
-    double x0, y0, x1, y1, m;
+    double x0, y0, x1, y1;     /* exact */
+    double gx0, gy0, gx1, gy1; /* grown */
 } cc__wall_box;
 
 static inline cc__wall_box cc__wall_box_of(const cc_segment *g)
 {
     cc__wall_box k;
+    double m;
     k.x0 = g->a.x < g->b.x ? g->a.x : g->b.x;
     k.x1 = g->a.x < g->b.x ? g->b.x : g->a.x;
     k.y0 = g->a.y < g->b.y ? g->a.y : g->b.y;
     k.y1 = g->a.y < g->b.y ? g->b.y : g->a.y;
-    k.m = 0x1p-30 * (fabs(k.x0) + fabs(k.x1) + fabs(k.y0) + fabs(k.y1));
+    m = 0x1p-30 * (fabs(k.x0) + fabs(k.x1) + fabs(k.y0) + fabs(k.y1));
+    k.gx0 = k.x0 - m;
+    k.gx1 = k.x1 + m;
+    k.gy0 = k.y0 - m;
+    k.gy1 = k.y1 + m;
     return k;
 }
 
@@ -64,12 +70,14 @@ static inline void cc__box_walls(const cc_world *w, cc__walls_boxed *wb)
         wb->box[s] = cc__wall_box_of(&seg[s]);
 }
 
-/* Wall s's box, from the pass's boxes when it has them. */
-static inline cc__wall_box cc__wall_box_at(const cc_world *w, const cc__walls_boxed *wb, int s)
+/* Wall s's box: the pass's when it has it (nb = its count, 0 without), else made in *tmp. */
+static inline const cc__wall_box *cc__wall_box_at(const cc_world *w, const cc__walls_boxed *wb, int nb, int s,
+                                                  cc__wall_box *tmp)
 {
-    if (wb != NULL && s < wb->n)
-        return wb->box[s];
-    return cc__wall_box_of(&CC__CARR(w, cc_segment, off_seg)[s]);
+    if (s < nb)
+        return &wb->box[s];
+    *tmp = cc__wall_box_of(&CC__CARR(w, cc_segment, off_seg)[s]);
+    return tmp;
 }
 
 #endif

@@ -36,16 +36,24 @@ static void cc__pair(cc_world *w, int i, int j, double dt)
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     const cc__body *bi = &B[i], *bj = &B[j];
     cc_vec2 dp, dv, n;
-    double t;
+    double t, R = bi->r + bj->r, reach2;
     int r;
-    if ((bi->vx == 0.0 && bi->vy == 0.0 && bj->vx == 0.0 && bj->vy == 0.0) || (isinf(C[i].m) && isinf(C[j].m)))
+    if (bi->vx == 0.0 && bi->vy == 0.0 && bj->vx == 0.0 && bj->vy == 0.0)
         return;
     dp = cc__v(bj->px - bi->px, bj->py - bi->py);
     dv = cc__v(bj->vx - bi->vx, bj->vy - bi->vy);
     if (!(cc__dot(dp, dv) < 0.0))
         return;
+    /* too far apart to close the gap in the step: |dp| > R + |dv| dt, with a margin far above
+     * the rounding of this test and of the sweep (squares below 2^-1000 lose precision) */
+    reach2 = R + (fabs(dv.x) + fabs(dv.y)) * dt;
+    reach2 *= reach2;
+    if (reach2 > 0x1p-1000 && dp.x * dp.x + dp.y * dp.y > reach2 * (1.0 + 0x1p-20))
+        return;
+    if (isinf(C[i].m) && isinf(C[j].m))
+        return;
     w->stats.pairs_tested++;
-    r = cc__sweep_rel(dp, dv, bi->r + bj->r, 0, 0, dt, &t, &n);
+    r = cc__sweep_rel(dp, dv, R, 0, 0, dt, &t, &n);
     if (r == CC_MISS ||
         !cc__approaching(w, -cc__dot(dv, n), fabs(bi->vx) + fabs(bi->vy) + fabs(bj->vx) + fabs(bj->vy)))
         return;
@@ -60,7 +68,7 @@ static void cc__walls(cc_world *w, int i, double dt, const cc__walls_boxed *wb)
     double x0, x1, y0, y1;
     cc_circle c;
     cc_contact k;
-    int s, first = 1;
+    int s, first = 1, nb = wb != NULL ? wb->n : 0;
     if (w->n_segments == 0 || (b->vx == 0.0 && b->vy == 0.0))
         return;
     /* the path's box grown by the radius */
@@ -69,8 +77,9 @@ static void cc__walls(cc_world *w, int i, double dt, const cc__walls_boxed *wb)
     y0 = (b->py < b->py + b->vy * dt ? b->py : b->py + b->vy * dt) - b->r;
     y1 = (b->py < b->py + b->vy * dt ? b->py + b->vy * dt : b->py) + b->r;
     for (s = 0; s < w->n_segments; s++) {
-        cc__wall_box g = cc__wall_box_at(w, wb, s);
-        if (g.x0 > x1 || g.x1 < x0 || g.y0 > y1 || g.y1 < y0)
+        cc__wall_box tmp;
+        const cc__wall_box *g = cc__wall_box_at(w, wb, nb, s, &tmp);
+        if ((g->x0 > x1) | (g->x1 < x0) | (g->y0 > y1) | (g->y1 < y0)) /* one branch, mostly taken */
             continue;
         if (first) { /* the body's cold part only when a wall is near */
             c.mass = CC__CARR(w, cc__cold, off_cold)[i].m;
