@@ -164,8 +164,8 @@ static void gas(int mode)
 static void test_swept_gas(void) { gas(CC_MODE_SWEPT); }
 static void test_discrete_gas(void) { gas(CC_MODE_DISCRETE); }
 
-/* SWEPT with a fast body among slow ones: it is taken out of the grid and still finds its
- * first impact far along its path (a target 500 cells away). */
+/* SWEPT with a fast body among slow ones: it looks over the cells its path covers and finds
+ * its first impact far along it (a target 500 cells away). */
 static void test_swept_fast_body_far_target(void)
 {
     enum { N = 100 };
