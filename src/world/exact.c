@@ -5,86 +5,59 @@
  * advanced (lazily) and predicted again. */
 #include "world_internal.h"
 
-/* What cc__impact_pair changes before it knows that the impact is a plain pair impact. */
-typedef struct cc__pair_undo {
-    cc__body body[2];
-    cc__event ev[2];
-    int queued[2];
-    double key[2];
-    cc_world_stats stats;
-} cc__pair_undo;
-
-static void cc__pair_restore(cc_world *w, const cc__touch *tc, const cc__pair_undo *u)
-{
-    cc__body *B = CC__ARR(w, cc__body, off_body);
-    cc__event *EV = CC__ARR(w, cc__event, off_ev);
-    int q;
-    while (cc__world_take_touched(w) >= 0)
-        ;
-    for (q = 0; q < 2; q++) {
-        int k = q == 0 ? tc->a : tc->b;
-        B[k] = u->body[q];
-        EV[k] = u->ev[q];
-        if (u->queued[q])
-            cc__heap_update(w, k, u->key[q]);
-        else
-            cc__heap_remove(w, k);
-    }
-    w->stats = u->stats;
-}
-
 /* The common case of an impact of two movable circles with nothing else touching either, made
  * cheap: the pair impulse, then the two predictions, whose neighbour scans also tell whether
- * the gathering (simultaneous.c) would have found anything else touching them now, with a
- * larger reach than the gathering's; walls are looked at first. If anything might touch, or
- * the impact is not a plain exchange of velocities, everything is put back as it was and 0 is
- * returned: the caller takes the general path, which then finds exactly what it found before.
- * Otherwise the world is bit for bit where the general path would have left it (the gathering
- * finds nothing, so it resolves the pair with resolve.c and predicts both bodies; predictions
- * of distinct bodies commute, and the queue orders by time and index, not by insertion). The
- * contact is reported with the world as the callback saw it before: velocities before the
- * impulse, and the pair tests of the predictions not yet counted. Returns 1 when done. */
+ * the gathering (simultaneous.c) would have found anything else touching them now, with twice
+ * its reach; walls are looked at first. If anything might touch, or the impulse did not change
+ * both velocities, what the impulse changed is put back (no prediction has been stored yet) and
+ * 0 is returned: the caller takes the general path, which then finds exactly what it found
+ * before. Otherwise the world is bit for bit where the general path would have left it: its
+ * gathering finds nothing, so it resolves the pair with resolve.c and predicts both bodies
+ * (predictions of distinct bodies commute, and the queue orders by time and index, not by
+ * insertion). The callback sees the world as it did there: velocities before the impulse, the
+ * pair tests of the predictions not yet counted. Returns 1 when done. */
 static int cc__impact_pair(cc_world *w, const cc__touch *tc)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
-    const cc__heap_entry *heap = CC__CARR(w, cc__heap_entry, off_heap);
-    const int32_t *hpos = CC__CARR(w, int32_t, off_hpos);
-    int a = tc->a, b = tc->b, q;
-    double reach_a, reach_b, impulse;
+    int a = tc->a, b = tc->b;
+    double reach_a, reach_b, impulse, va[2], vb[2];
+    uint32_t count_a, count_b;
+    uint64_t tested;
+    cc_world_stats stats;
     cc_contact k;
-    cc__pair_undo u;
     if (b < 0 || w->clu_bodies < 2 || w->dirty || w->n_touched != 0 || isinf(C[a].m) || isinf(C[b].m))
         return 0;
     if (cc__cluster_pair_reach(w, a, b, &reach_a, &reach_b))
         return 0;
-    for (q = 0; q < 2; q++) {
-        int id = q == 0 ? a : b;
-        u.body[q] = B[id];
-        u.ev[q] = CC__CARR(w, cc__event, off_ev)[id];
-        u.queued[q] = hpos[id] >= 0;
-        u.key[q] = hpos[id] >= 0 ? heap[hpos[id]].key : 0.0;
-    }
-    u.stats = w->stats;
+    va[0] = B[a].vx, va[1] = B[a].vy, vb[0] = B[b].vx, vb[1] = B[b].vy;
+    count_a = B[a].count, count_b = B[b].count;
+    stats = w->stats;
     if (cc__world_resolve_pair_held(w, tc, &k, &impulse) != 1 || w->n_touched != 2 ||
-        cc__predict_alone(w, b, a, reach_b) || cc__predict_alone(w, a, b, reach_a)) {
-        cc__pair_restore(w, tc, &u);
+        cc__predict_pair_alone(w, a, b, reach_a, reach_b)) {
+        while (cc__world_take_touched(w) >= 0)
+            ;
+        B[a].vx = va[0], B[a].vy = va[1], B[b].vx = vb[0], B[b].vy = vb[1];
+        B[a].count = count_a, B[b].count = count_b;
+        w->stats = stats;
         return 0;
     }
     while (cc__world_take_touched(w) >= 0)
         ;
     if (w->on_contact == NULL) {
-        w->stats.collisions++;
-    } else {
-        double va[2], vb[2];
-        uint64_t tested = w->stats.pairs_tested;
-        va[0] = B[a].vx, va[1] = B[a].vy, vb[0] = B[b].vx, vb[1] = B[b].vy;
-        B[a].vx = u.body[0].vx, B[a].vy = u.body[0].vy, B[b].vx = u.body[1].vx, B[b].vy = u.body[1].vy;
-        w->stats.pairs_tested = u.stats.pairs_tested;
-        cc__world_report(w, a, b, -1, &k, impulse);
-        w->stats.pairs_tested = tested;
-        B[a].vx = va[0], B[a].vy = va[1], B[b].vx = vb[0], B[b].vy = vb[1];
+        cc__world_report(w, a, b, -1, &k, impulse); /* counts it */
+        return 1;
     }
+    tested = w->stats.pairs_tested;
+    w->stats.pairs_tested = stats.pairs_tested;
+    {
+        double na[2], nb[2];
+        na[0] = B[a].vx, na[1] = B[a].vy, nb[0] = B[b].vx, nb[1] = B[b].vy;
+        B[a].vx = va[0], B[a].vy = va[1], B[b].vx = vb[0], B[b].vy = vb[1];
+        cc__world_report(w, a, b, -1, &k, impulse);
+        B[a].vx = na[0], B[a].vy = na[1], B[b].vx = nb[0], B[b].vy = nb[1];
+    }
+    w->stats.pairs_tested = tested;
     return 1;
 }
 

@@ -44,7 +44,7 @@ CC__NOINLINE void cc__try_close(const cc_world *w, const cc__body *bi, const cc_
     best->pcount = bj->count;
 }
 
-/* What cc__predict_alone looks for besides the hit: a circle other than partner within the
+/* What cc__predict_pair_alone looks for besides the hit: a circle other than partner within the
  * radius sum + reach now (near is set). In the plain prediction check is 0 and this compiles
  * away. */
 typedef struct cc__alone {
@@ -220,17 +220,46 @@ static void cc__finish(cc_world *w, int i, cc__cand *best, double t_cross, int32
         cc__heap_update(w, i, best->t < t_cross ? best->t : t_cross);
 }
 
-CC__INLINE_ALWAYS void cc__predict_x(cc_world *w, int i, int check, cc__alone *al)
+/* The neighbour scan of a prediction of moving body i, at now: its earliest hit on a circle
+ * into *best and its cell crossing into *t_cross, *dir. Returns the pair tests made. */
+CC__INLINE_ALWAYS uint64_t cc__predict_scan(cc_world *w, int i, cc__cand *best, double *t_cross, int32_t *dir,
+                                            int check, cc__alone *al)
 {
-    cc__body *B = CC__ARR(w, cc__body, off_body);
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
-    cc__body *bi = &B[i];
-    double t_cross = HUGE_VAL;
-    int32_t dir = -1;
+    const cc__body *bi = &B[i];
     uint64_t tests = 0;
-    cc__cand best;
     int j, fixed = isinf(C[i].m);
-    if (!(C[i].flags & CC__ALIVE) || (bi->vx == 0.0 && bi->vy == 0.0)) {
+    *t_cross = HUGE_VAL;
+    *dir = -1;
+    best->t = HUGE_VAL;
+    best->kind = CC__EV_NONE;
+    best->partner = -1;
+    best->pcount = 0;
+    if (!w->use_grid || (C[i].flags & CC__LARGE)) {
+        for (j = 0; j < w->id_end; j++)
+            if (j != i && (C[j].flags & CC__ALIVE))
+                cc__try_circle_x(w, B, bi, fixed, j, w->now, best, &tests, check, al);
+    } else {
+        if (check)
+            cc__scan_block_alone(w, B, i, fixed, bi->cx - 1, bi->cy - 1, best, &tests, al);
+        else
+            cc__scan_block(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, best, &tests);
+        for (j = w->large_head; j >= 0; j = B[j].next)
+            if (j != i)
+                cc__try_circle_x(w, B, bi, fixed, j, w->now, best, &tests, check, al);
+        *t_cross = cc__cross_time(w, bi, dir);
+    }
+    return tests;
+}
+
+void cc__predict(cc_world *w, int i)
+{
+    cc__body *bi = &CC__ARR(w, cc__body, off_body)[i];
+    double t_cross;
+    int32_t dir;
+    cc__cand best;
+    if (!(CC__CARR(w, cc__cold, off_cold)[i].flags & CC__ALIVE) || (bi->vx == 0.0 && bi->vy == 0.0)) {
         cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
         ev->kind = CC__EV_NONE;
         ev->t = ev->t_cross = HUGE_VAL;
@@ -238,41 +267,37 @@ CC__INLINE_ALWAYS void cc__predict_x(cc_world *w, int i, int check, cc__alone *a
         return;
     }
     cc__advance_body(bi, w->now);
-    best.t = HUGE_VAL;
-    best.kind = CC__EV_NONE;
-    best.partner = -1;
-    best.pcount = 0;
-    if (!w->use_grid || (C[i].flags & CC__LARGE)) {
-        for (j = 0; j < w->id_end; j++)
-            if (j != i && (C[j].flags & CC__ALIVE))
-                cc__try_circle_x(w, B, bi, fixed, j, w->now, &best, &tests, check, al);
-    } else {
-        if (check)
-            cc__scan_block_alone(w, B, i, fixed, bi->cx - 1, bi->cy - 1, &best, &tests, al);
-        else
-            cc__scan_block(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, &best, &tests);
-        for (j = w->large_head; j >= 0; j = B[j].next)
-            if (j != i)
-                cc__try_circle_x(w, B, bi, fixed, j, w->now, &best, &tests, check, al);
-        t_cross = cc__cross_time(w, bi, &dir);
-    }
-    w->stats.pairs_tested += tests;
+    w->stats.pairs_tested += cc__predict_scan(w, i, &best, &t_cross, &dir, 0, NULL);
     cc__finish(w, i, &best, t_cross, dir);
 }
 
-void cc__predict(cc_world *w, int i) { cc__predict_x(w, i, 0, NULL); }
-
-int cc__predict_alone(cc_world *w, int i, int partner, double reach)
+int cc__predict_pair_alone(cc_world *w, int a, int b, double reach_a, double reach_b)
 {
+    cc__body *B = CC__ARR(w, cc__body, off_body);
+    double tc_a, tc_b;
+    int32_t dir_a, dir_b;
+    uint64_t tests;
+    cc__cand best_a, best_b;
     cc__alone al;
-    const cc__body *bi = &CC__CARR(w, cc__body, off_body)[i];
-    al.partner = partner;
+    if ((B[a].vx == 0.0 && B[a].vy == 0.0) || (B[b].vx == 0.0 && B[b].vy == 0.0))
+        return 1; /* a body at rest predicts nothing, so it scans nothing */
+    cc__advance_body(&B[a], w->now);
+    cc__advance_body(&B[b], w->now);
     al.near = 0;
-    al.reach = reach;
-    if (bi->vx == 0.0 && bi->vy == 0.0)
-        return 1; /* predicts nothing, so it scans nothing: the caller takes the general path */
-    cc__predict_x(w, i, 1, &al);
-    return al.near;
+    al.partner = b;
+    al.reach = reach_a;
+    tests = cc__predict_scan(w, a, &best_a, &tc_a, &dir_a, 1, &al);
+    if (al.near)
+        return 1;
+    al.partner = a;
+    al.reach = reach_b;
+    tests += cc__predict_scan(w, b, &best_b, &tc_b, &dir_b, 1, &al);
+    if (al.near)
+        return 1;
+    w->stats.pairs_tested += tests;
+    cc__finish(w, a, &best_a, tc_a, dir_a);
+    cc__finish(w, b, &best_b, tc_b, dir_b);
+    return 0;
 }
 
 void cc__predict_crossed(cc_world *w, int i, int dir)

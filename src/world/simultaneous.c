@@ -210,7 +210,7 @@ int cc__cluster_pair_reach(const cc_world *w, int a, int b, double *reach_a, dou
     double va = cc__inf_norm(B[a].vx, B[a].vy), vb = cc__inf_norm(B[b].vx, B[b].vy);
     double vmax = va > vb ? va : vb, rmax = w->cs, common;
     double ax = cc__bx(&B[a], w->now), ay = cc__by(&B[a], w->now), bx = cc__bx(&B[b], w->now),
-           by = cc__by(&B[b], w->now), ga, gb;
+           by = cc__by(&B[b], w->now), ga, gb, g, x0, x1, y0, y1;
     int s;
     rmax = B[a].r > rmax ? B[a].r : rmax;
     rmax = B[b].r > rmax ? B[b].r : rmax;
@@ -219,13 +219,18 @@ int cc__cluster_pair_reach(const cc_world *w, int a, int b, double *reach_a, dou
     *reach_b = 8.0 * CC__CLU_TOL * (2.0 * cc__inf_norm(bx, by) + common);
     ga = B[a].r + *reach_a;
     gb = B[b].r + *reach_b;
+    g = ga > gb ? ga : gb;
+    /* one box around both bodies, grown by the larger reach: contains both of near.c's */
+    x0 = (ax < bx ? ax : bx) - g;
+    x1 = (ax < bx ? bx : ax) + g;
+    y0 = (ay < by ? ay : by) - g;
+    y1 = (ay < by ? by : ay) + g;
     for (s = 0; s < w->n_segments; s++) {
         const cc_segment *q = &seg[s];
-        double x0 = q->a.x < q->b.x ? q->a.x : q->b.x, x1 = q->a.x < q->b.x ? q->b.x : q->a.x;
-        double y0 = q->a.y < q->b.y ? q->a.y : q->b.y, y1 = q->a.y < q->b.y ? q->b.y : q->a.y;
-        if (!(ax + ga < x0 || ax - ga > x1 || ay + ga < y0 || ay - ga > y1) ||
-            !(bx + gb < x0 || bx - gb > x1 || by + gb < y0 || by - gb > y1))
-            return 1;
+        if ((q->a.x < x0 && q->b.x < x0) || (q->a.x > x1 && q->b.x > x1) || (q->a.y < y0 && q->b.y < y0) ||
+            (q->a.y > y1 && q->b.y > y1))
+            continue;
+        return 1;
     }
     return 0;
 }

@@ -153,11 +153,11 @@ static inline uint32_t cc__grid_slot(const cc_world *w, int32_t cx, int32_t cy)
 void cc__predict(cc_world *w, int id);
 /* after body id crossed into a new cell through side dir: only the new cells are searched */
 void cc__predict_crossed(cc_world *w, int id, int dir);
-/* cc__predict for a movable body i at the instant of its impact with circle partner, that
- * also tells whether any other circle lies within the radius sum + reach of it now (1) or none
- * does (0): the neighbour scan that the prediction makes anyway answers the gathering's
- * question (simultaneous.c) for free. */
-int cc__predict_alone(cc_world *w, int i, int partner, double reach);
+/* cc__predict of moving circles a and b at the instant of their impact, made only when no
+ * other circle lies within the radius sum + reach_a of a, or + reach_b of b, now (returns 0);
+ * otherwise nothing is changed and 1 is returned (also when either is at rest). The neighbour
+ * scans that the predictions make anyway answer the gathering's question (simultaneous.c). */
+int cc__predict_pair_alone(cc_world *w, int a, int b, double reach_a, double reach_b);
 /* re-predicts every movable body that could meet body id (its neighbourhood) */
 void cc__predict_neighbours(cc_world *w, int id);
 /* A large world (EXACT): asks the memory for what the next few events will read, so that it
