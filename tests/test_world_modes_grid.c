@@ -149,6 +149,45 @@ static void test_scene_moves(void)
     TEST_ASSERT_TRUE(moved >= N / 2);
 }
 
+/* A bullet at 1e40 whose reach spans every cell (2^31 + 1 of them along x, the grid's whole
+ * range): its neighbourhood is counted without overflowing the cell arithmetic (UBSan
+ * watches), and it still finds the first circle in its way. Equal masses, restitution 1: the
+ * bullet stops where it touches the first circle of the row (centres 2 apart: x = 98, at
+ * t = 9.8e-39) and that circle leaves at 1e40 (through the others: SWEPT predicts no second
+ * impact within the step). */
+static void test_swept_path_over_every_cell(void)
+{
+    enum { M = 40 };
+    tw_mem m;
+    cc_world_def d;
+    cc_world *w;
+    cc_circle c, got;
+    int i, bullet;
+    cc_world_def_init(&d);
+    d.mode = CC_MODE_SWEPT;
+    d.max_circles = M;
+    w = tw_make(&m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    memset(&c, 0, sizeof c);
+    c.radius = 1.0;
+    c.mass = 1.0;
+    for (i = 0; i < M - 1; i++) { /* a row at rest from x = 100, 10 apart */
+        c.pos.x = 100.0 + 10.0 * i;
+        TEST_ASSERT_EQUAL_INT(i, cc_world_add_circle(w, &c));
+    }
+    c.pos.x = 0.0;
+    c.vel.x = 1e40;
+    bullet = cc_world_add_circle(w, &c);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, bullet, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, got.vel.x);
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 98.0, got.pos.x);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+    TEST_ASSERT_EQUAL_DOUBLE(1e40, got.vel.x);
+    TEST_ASSERT_TRUE(tw_canary_ok(&m));
+    tw_free(&m);
+}
+
 int main(void)
 {
     make_scene();
@@ -157,5 +196,6 @@ int main(void)
     RUN_TEST(test_swept_head_on_pairs_meet);
     RUN_TEST(test_swept_storage_order_does_not_matter);
     RUN_TEST(test_scene_moves);
+    RUN_TEST(test_swept_path_over_every_cell);
     return UNITY_END();
 }

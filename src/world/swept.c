@@ -144,7 +144,7 @@ static void cc__sweep_body(cc_world *w, int i, double dt, double rmax, double sl
     x1 = cc__cell_of(w, b->px + reach);
     y0 = cc__cell_of(w, b->py - reach);
     y1 = cc__cell_of(w, b->py + reach);
-    if ((double)(x1 - x0 + 1) * (double)(y1 - y0 + 1) > (double)w->id_end) {
+    if (((double)x1 - (double)x0 + 1.0) * ((double)y1 - (double)y0 + 1.0) > (double)w->id_end) {
         const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
         for (j = 0; j < w->id_end; j++) /* more cells than there are bodies */
             if ((C[j].flags & (CC__ALIVE | CC__LARGE)) == CC__ALIVE && j != i) {
