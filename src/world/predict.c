@@ -27,7 +27,7 @@ typedef struct cc__cand {
     uint32_t pcount;
 } cc__cand;
 
-/* The solver's part of cc__try_circle, out of line: most pairs never get here. */
+/* The solver's part of cc__try_circle_x, out of line: most pairs never get here. */
 CC__NOINLINE void cc__try_close(const cc_world *w, const cc__body *bi, const cc__body *bj, int j, cc_vec2 dp,
                                 cc_vec2 dv, double now, cc__cand *best)
 {
@@ -82,12 +82,6 @@ CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, co
     if (cr * cr > 1.0000001 * dv2 * R * R && dp.x * dp.x + dp.y * dp.y > R * R)
         return;
     cc__try_close(w, bi, bj, j, dp, dv, now, best);
-}
-
-CC__INLINE_ALWAYS void cc__try_circle(const cc_world *w, const cc__body *B, const cc__body *bi, int i_fixed, int j,
-                                      double now, cc__cand *best, uint64_t *tests)
-{
-    cc__try_circle_x(w, B, bi, i_fixed, j, now, best, tests, 0, NULL);
 }
 
 /* Walls within reach before min(best, t_cross). */
