@@ -10,18 +10,6 @@
 void setUp(void) {}
 void tearDown(void) {}
 
-static cc_circle circle(double x, double y, double vx, double vy, double r, double m)
-{
-    cc_circle c;
-    c.pos.x = x;
-    c.pos.y = y;
-    c.vel.x = vx;
-    c.vel.y = vy;
-    c.radius = r;
-    c.mass = m;
-    return c;
-}
-
 static void test_def_defaults(void)
 {
     cc_world_def d;
@@ -130,7 +118,7 @@ static void test_def_cut_short(void)
     cc_world_def d;
     tw_mem m;
     cc_world *w;
-    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(4, 0, -1, 0, 1, 1), got;
+    cc_circle a = tw_circle(0, 0, 1, 0, 1, 1), b = tw_circle(4, 0, -1, 0, 1, 1), got;
     int st = 99;
     size_t old = offsetof(cc_world_def, restitution) + sizeof(double);
     memset(&d, 0xFF, sizeof d); /* garbage in rest_speed, cell_size, max_events, on_contact... */
@@ -204,7 +192,7 @@ static void test_ids_stable_and_reused(void)
 {
     tw_mem m;
     cc_world *w = small_world(&m, 3, 0);
-    cc_circle c = circle(0, 0, 0, 0, 1, 1), got;
+    cc_circle c = tw_circle(0, 0, 0, 0, 1, 1), got;
     int ids[3];
     TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
     c.pos.x = 10;
@@ -262,7 +250,7 @@ static void test_errors_change_nothing(void)
 {
     tw_mem m;
     cc_world *w = small_world(&m, 4, 0);
-    cc_circle a = circle(0, 0, 1, 0.5, 1, 2), b = circle(5, 1, -1, 0, 0.5, 1), bad;
+    cc_circle a = tw_circle(0, 0, 1, 0.5, 1, 2), b = tw_circle(5, 1, -1, 0, 0.5, 1), bad;
     cc_circle before[2], after[2];
     cc_world_stats s0, s1;
     double t0;
@@ -331,7 +319,7 @@ static void test_stats_cut_short(void)
 {
     tw_mem m;
     cc_world *w = small_world(&m, 2, 0);
-    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(4, 0, -1, 0, 1, 1);
+    cc_circle a = tw_circle(0, 0, 1, 0, 1, 1), b = tw_circle(4, 0, -1, 0, 1, 1);
     cc_world_stats s;
     (void)cc_world_add_circle(w, &a);
     (void)cc_world_add_circle(w, &b);
@@ -350,7 +338,7 @@ static cc_world *g_world;
 static int g_refused;
 static void meddle(const cc_contact_event *e, void *user)
 {
-    cc_circle c = circle(100, 100, 0, 0, 1, 1);
+    cc_circle c = tw_circle(100, 100, 0, 0, 1, 1);
     (void)user;
     g_refused += cc_world_remove_circle(g_world, e->a) == CC_ERR_INVALID;
     g_refused += cc_world_add_circle(g_world, &c) == CC_ERR_INVALID;
@@ -361,7 +349,7 @@ static void test_callback_cannot_meddle(void)
 {
     cc_world_def d;
     tw_mem m;
-    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(4, 0, -1, 0, 1, 1);
+    cc_circle a = tw_circle(0, 0, 1, 0, 1, 1), b = tw_circle(4, 0, -1, 0, 1, 1);
     cc_world_def_init(&d);
     d.max_circles = 3;
     d.on_contact = meddle;
@@ -381,7 +369,7 @@ static void test_empty_world(void)
 {
     tw_mem m;
     cc_world *w = small_world(&m, 0, 0);
-    cc_circle c = circle(0, 0, 0, 0, 1, 1);
+    cc_circle c = tw_circle(0, 0, 0, 0, 1, 1);
     TEST_ASSERT_NOT_NULL(w);
     TEST_ASSERT_EQUAL_INT(CC_ERR_FULL, cc_world_add_circle(w, &c));
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));

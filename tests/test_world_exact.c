@@ -15,28 +15,6 @@ void tearDown(void) {}
  * ~1e3 radii of the origin); the tests allow 1e-10. */
 #define TW_OVERLAP_TOL 1e-10
 
-static cc_circle circle(double x, double y, double vx, double vy, double r, double m)
-{
-    cc_circle c;
-    c.pos.x = x;
-    c.pos.y = y;
-    c.vel.x = vx;
-    c.vel.y = vy;
-    c.radius = r;
-    c.mass = m;
-    return c;
-}
-
-static cc_segment segment(double ax, double ay, double bx, double by)
-{
-    cc_segment s;
-    s.a.x = ax;
-    s.a.y = ay;
-    s.b.x = bx;
-    s.b.y = by;
-    return s;
-}
-
 static cc_world *world(tw_mem *m, int cap, int segs, double e)
 {
     cc_world_def d;
@@ -45,14 +23,6 @@ static cc_world *world(tw_mem *m, int cap, int segs, double e)
     d.max_segments = segs;
     d.restitution = e;
     return tw_make(m, &d, 0);
-}
-
-static cc_world_stats stats(const cc_world *w)
-{
-    cc_world_stats s;
-    s.struct_size = sizeof s;
-    (void)cc_world_get_stats(w, &s);
-    return s;
 }
 
 static cc_contact_event g_events[8];
@@ -74,7 +44,7 @@ static void test_head_on_pair(void)
     cc_world_def d;
     tw_mem m;
     cc_world *w;
-    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(10, 0, -1, 0, 1, 3), got;
+    cc_circle a = tw_circle(0, 0, 1, 0, 1, 1), b = tw_circle(10, 0, -1, 0, 1, 3), got;
     cc_world_def_init(&d);
     d.max_circles = 2;
     d.on_contact = record;
@@ -102,7 +72,7 @@ static void test_head_on_pair(void)
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &got));
     TEST_ASSERT_EQUAL_DOUBLE(6.0, got.pos.x);
     TEST_ASSERT_EQUAL_DOUBLE(0.0, got.vel.x);
-    TEST_ASSERT_EQUAL_UINT64(1, stats(w).collisions);
+    TEST_ASSERT_EQUAL_UINT64(1, tw_stats(w).collisions);
     tw_free(&m);
 }
 
@@ -113,8 +83,8 @@ static void test_wall_bounce(void)
     cc_world_def d;
     tw_mem m;
     cc_world *w;
-    cc_circle a = circle(5, 0, -2, 0, 1, 1), got;
-    cc_segment s = segment(0, -5, 0, 5);
+    cc_circle a = tw_circle(5, 0, -2, 0, 1, 1), got;
+    cc_segment s = tw_segment(0, -5, 0, 5);
     cc_world_def_init(&d);
     d.max_circles = 1;
     d.max_segments = 1;
@@ -142,14 +112,14 @@ static uint64_t galperin(double ratio)
 {
     tw_mem m;
     cc_world *w = world(&m, 2, 1, 1.0);
-    cc_segment s = segment(0, -10, 0, 10);
-    cc_circle light = circle(2, 0, 0, 0, 1, 1), heavy = circle(5, 0, -1, 0, 1, ratio);
+    cc_segment s = tw_segment(0, -10, 0, 10);
+    cc_circle light = tw_circle(2, 0, 0, 0, 1, 1), heavy = tw_circle(5, 0, -1, 0, 1, ratio);
     uint64_t n;
     (void)cc_world_add_segment(w, &s);
     (void)cc_world_add_circle(w, &light);
     (void)cc_world_add_circle(w, &heavy);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1e3));
-    n = stats(w).collisions;
+    n = tw_stats(w).collisions;
     tw_free(&m);
     return n;
 }
@@ -183,10 +153,10 @@ static void test_box_gas_invariants(void)
         TEST_ASSERT_TRUE(tw_max_rel_overlap(c, N, 1.0) < TW_OVERLAP_TOL);
     }
     /* 400 circles at speed ~0.8 and mean free path ~3 radii: thousands of collisions */
-    TEST_ASSERT_TRUE(stats(w).collisions > 20000);
-    TEST_ASSERT_TRUE(stats(w).max_overlap < 2.0 * TW_OVERLAP_TOL);
-    printf("box gas: %llu collisions, %llu events, max overlap %.3g\n", (unsigned long long)stats(w).collisions,
-           (unsigned long long)stats(w).events, stats(w).max_overlap);
+    TEST_ASSERT_TRUE(tw_stats(w).collisions > 20000);
+    TEST_ASSERT_TRUE(tw_stats(w).max_overlap < 2.0 * TW_OVERLAP_TOL);
+    printf("box gas: %llu collisions, %llu events, max overlap %.3g\n", (unsigned long long)tw_stats(w).collisions,
+           (unsigned long long)tw_stats(w).events, tw_stats(w).max_overlap);
     tw_free(&m);
 }
 
@@ -203,7 +173,7 @@ static void test_momentum_and_energy(void)
     int i;
     for (i = 0; i < N; i++) {
         double ang = 6.283185307179586 * tw_rand(&seed), rad = 30.0 + 30.0 * tw_rand(&seed);
-        cc_circle k = circle(rad * cos(ang), rad * sin(ang), -cos(ang) * (1 + tw_rand(&seed)),
+        cc_circle k = tw_circle(rad * cos(ang), rad * sin(ang), -cos(ang) * (1 + tw_rand(&seed)),
                              -sin(ang) * (1 + tw_rand(&seed)), 0.5 + 0.5 * tw_rand(&seed), 0.5 + 4 * tw_rand(&seed));
         (void)cc_world_add_circle(w, &k);
     }
@@ -219,7 +189,7 @@ static void test_momentum_and_energy(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-11 * t0.energy, t0.px, t1.px);
     TEST_ASSERT_DOUBLE_WITHIN(1e-11 * t0.energy, t0.py, t1.py);
     TEST_ASSERT_TRUE(tw_max_rel_overlap(c, N, 1.0) < TW_OVERLAP_TOL);
-    TEST_ASSERT_TRUE(stats(w).collisions > 1000);
+    TEST_ASSERT_TRUE(tw_stats(w).collisions > 1000);
     tw_free(&m);
 }
 
@@ -251,7 +221,7 @@ static void test_deterministic_and_address_free(void)
     run_box(tw_make(&m3, &d, 48), c3, N);
     TEST_ASSERT_EQUAL_MEMORY(c1, c2, sizeof c1);
     TEST_ASSERT_EQUAL_MEMORY(c1, c3, sizeof c1);
-    TEST_ASSERT_EQUAL_UINT64(stats((cc_world *)(void *)m1.mem).events, stats((cc_world *)(void *)m3.mem).events);
+    TEST_ASSERT_EQUAL_UINT64(tw_stats((cc_world *)(void *)m1.mem).events, tw_stats((cc_world *)(void *)m3.mem).events);
     tw_free(&m1);
     tw_free(&m2);
     tw_free(&m3);
@@ -282,8 +252,8 @@ static void test_no_tunnelling(void)
 {
     tw_mem m;
     cc_world *w = world(&m, 1, 1, 1.0);
-    cc_segment wall = segment(10, -1, 10, 1);
-    cc_circle bullet = circle(0, 0, 1e4, 0, 0.1, 1), got;
+    cc_segment wall = tw_segment(10, -1, 10, 1);
+    cc_circle bullet = tw_circle(0, 0, 1e4, 0, 0.1, 1), got;
     (void)cc_world_add_segment(w, &wall);
     (void)cc_world_add_circle(w, &bullet);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));
@@ -295,7 +265,7 @@ static void test_no_tunnelling(void)
 
     w = world(&m, 2, 0, 1.0);
     {
-        cc_circle target = circle(10, 0, 0, 0, 0.1, 1);
+        cc_circle target = tw_circle(10, 0, 0, 0, 0.1, 1);
         (void)cc_world_add_circle(w, &bullet);
         (void)cc_world_add_circle(w, &target);
     }
@@ -314,7 +284,7 @@ static void test_immovable_obstacle(void)
 {
     tw_mem m;
     cc_world *w = world(&m, 2, 0, 1.0);
-    cc_circle a = circle(0, 0, 1, 0, 1, 1), post = circle(5, 0, 0, 0, 2, INFINITY), got;
+    cc_circle a = tw_circle(0, 0, 1, 0, 1, 1), post = tw_circle(5, 0, 0, 0, 2, INFINITY), got;
     (void)cc_world_add_circle(w, &a);
     (void)cc_world_add_circle(w, &post);
     /* touch at x = 5 - 3 = 2, t = 2; back to x = 0 at t = 4 */
@@ -334,11 +304,11 @@ static void test_overlap_after_set(void)
 {
     tw_mem m;
     cc_world *w = world(&m, 2, 0, 1.0);
-    cc_circle a = circle(0, 0, 0, 0, 1, 1), b = circle(10, 0, 0, 0, 1, 1), got_a, got_b;
+    cc_circle a = tw_circle(0, 0, 0, 0, 1, 1), b = tw_circle(10, 0, 0, 0, 1, 1), got_a, got_b;
     (void)cc_world_add_circle(w, &a);
     (void)cc_world_add_circle(w, &b);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));
-    b = circle(1, 0, -1, 0, 1, 1); /* depth 1: each moves 0.5 */
+    b = tw_circle(1, 0, -1, 0, 1, 1); /* depth 1: each moves 0.5 */
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle(w, 1, &b));
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got_a));
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &got_b));
@@ -346,7 +316,7 @@ static void test_overlap_after_set(void)
     TEST_ASSERT_EQUAL_DOUBLE(1.5, got_b.pos.x);
     TEST_ASSERT_EQUAL_DOUBLE(-1.0, got_a.vel.x); /* b approached: velocities exchanged */
     TEST_ASSERT_EQUAL_DOUBLE(0.0, got_b.vel.x);
-    TEST_ASSERT_EQUAL_UINT64(1, stats(w).collisions);
+    TEST_ASSERT_EQUAL_UINT64(1, tw_stats(w).collisions);
     tw_free(&m);
 }
 
@@ -355,7 +325,7 @@ static void test_remove_mid_flight(void)
 {
     tw_mem m;
     cc_world *w = world(&m, 3, 0, 1.0);
-    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(10, 0, 0, 0, 1, 1), got;
+    cc_circle a = tw_circle(0, 0, 1, 0, 1, 1), b = tw_circle(10, 0, 0, 0, 1, 1), got;
     (void)cc_world_add_circle(w, &a);
     (void)cc_world_add_circle(w, &b);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 5.0)); /* contact would be at t = 8 */
@@ -363,7 +333,7 @@ static void test_remove_mid_flight(void)
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 10.0));
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
     TEST_ASSERT_EQUAL_DOUBLE(15.0, got.pos.x);
-    TEST_ASSERT_EQUAL_UINT64(0, stats(w).collisions);
+    TEST_ASSERT_EQUAL_UINT64(0, tw_stats(w).collisions);
     tw_free(&m);
 }
 
@@ -377,8 +347,8 @@ static void test_event_cap_stops_collapse(void)
     cc_world_def d;
     tw_mem m;
     cc_world *w;
-    cc_segment s = segment(0, -10, 0, 10);
-    cc_circle light = circle(1.5, 0, 1, 0, 1, 1), pusher = circle(6, 0, -1, 0, 2, INFINITY), got;
+    cc_segment s = tw_segment(0, -10, 0, 10);
+    cc_circle light = tw_circle(1.5, 0, 1, 0, 1, 1), pusher = tw_circle(6, 0, -1, 0, 2, INFINITY), got;
     double t;
     cc_world_def_init(&d);
     d.max_circles = 2;
@@ -392,11 +362,11 @@ static void test_event_cap_stops_collapse(void)
     TEST_ASSERT_EQUAL_INT(CC_EVENT_LIMIT, cc_world_step(w, 10.0));
     t = cc_world_time(w);
     TEST_ASSERT_TRUE(t > 0.0 && t <= 2.0 + 1e-12);
-    TEST_ASSERT_EQUAL_UINT64(1000, stats(w).events);
+    TEST_ASSERT_EQUAL_UINT64(1000, tw_stats(w).events);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
     TEST_ASSERT_TRUE(got.pos.x >= 1.0 - 1e-9);
     TEST_ASSERT_EQUAL_INT(CC_EVENT_LIMIT, cc_world_step(w, 10.0)); /* another call continues */
-    TEST_ASSERT_EQUAL_UINT64(2000, stats(w).events);
+    TEST_ASSERT_EQUAL_UINT64(2000, tw_stats(w).events);
     TEST_ASSERT_TRUE(cc_world_time(w) >= t);
     tw_free(&m);
 }
@@ -418,16 +388,16 @@ static uint64_t three_in_a_row(double rest_speed)
     d.rest_speed = rest_speed;
     d.max_events = 100000;
     w = tw_make(&m, &d, 0);
-    c = circle(0, 0, 1, 0, 1, 1);
+    c = tw_circle(0, 0, 1, 0, 1, 1);
     (void)cc_world_add_circle(w, &c);
-    c = circle(3, 0, 0, 0, 1, 1);
+    c = tw_circle(3, 0, 0, 0, 1, 1);
     (void)cc_world_add_circle(w, &c);
-    c = circle(6.5, 0, -1, 0, 1, 1); /* not at the same instant as the first: that would be one
+    c = tw_circle(6.5, 0, -1, 0, 1, 1); /* not at the same instant as the first: that would be one
                                        simultaneous impact, resolved at once (docs/SIMULTANEOUS.md) */
     (void)cc_world_add_circle(w, &c);
     r = cc_world_step(w, 100.0);
     TEST_ASSERT_TRUE(r == CC_OK || r == CC_EVENT_LIMIT);
-    n = stats(w).collisions;
+    n = tw_stats(w).collisions;
     printf("three in a row, rest_speed %g: %llu collisions, %s\n", rest_speed, (unsigned long long)n,
            cc_result_string(r));
     if (rest_speed > 0.0)
@@ -450,8 +420,8 @@ static void test_overlap_at_start(void)
 {
     tw_mem m;
     cc_world *w = world(&m, 3, 1, 1.0);
-    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(1.5, 0, -1, 0, 1, 1), c = circle(0, 10.5, 0, 0, 1, 1), got;
-    cc_segment floor_ = segment(-5, 10, 5, 10);
+    cc_circle a = tw_circle(0, 0, 1, 0, 1, 1), b = tw_circle(1.5, 0, -1, 0, 1, 1), c = tw_circle(0, 10.5, 0, 0, 1, 1), got;
+    cc_segment floor_ = tw_segment(-5, 10, 5, 10);
     (void)cc_world_add_segment(w, &floor_);
     (void)cc_world_add_circle(w, &a);
     (void)cc_world_add_circle(w, &b);
@@ -465,8 +435,8 @@ static void test_overlap_at_start(void)
     TEST_ASSERT_EQUAL_DOUBLE(1.0, got.vel.x);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 2, &got));
     TEST_ASSERT_EQUAL_DOUBLE(11.0, got.pos.y); /* out of the wall y = 10: centre at 10 + 1 */
-    TEST_ASSERT_EQUAL_UINT64(1, stats(w).collisions); /* c was at rest: no impulse */
-    TEST_ASSERT_EQUAL_DOUBLE(0.5, stats(w).max_overlap); /* the deepest overlap seen */
+    TEST_ASSERT_EQUAL_UINT64(1, tw_stats(w).collisions); /* c was at rest: no impulse */
+    TEST_ASSERT_EQUAL_DOUBLE(0.5, tw_stats(w).max_overlap); /* the deepest overlap seen */
     tw_free(&m);
 }
 
@@ -481,16 +451,16 @@ static void test_large_obstacle_in_grid(void)
     enum { RING = 20, N = 41 };
     tw_mem m;
     cc_world *w = world(&m, N, 0, 1.0);
-    cc_circle disc = circle(0, 0, 0, 0, 10, INFINITY), got;
+    cc_circle disc = tw_circle(0, 0, 0, 0, 10, INFINITY), got;
     int i;
     (void)cc_world_add_circle(w, &disc);
     for (i = 1; i <= RING; i++) {
         double a = 6.283185307179586 * i / RING;
-        cc_circle c = circle(30 * cos(a), 30 * sin(a), -cos(a), -sin(a), 1, 1);
+        cc_circle c = tw_circle(30 * cos(a), 30 * sin(a), -cos(a), -sin(a), 1, 1);
         (void)cc_world_add_circle(w, &c);
     }
     for (i = RING + 1; i < N; i++) {
-        cc_circle c = circle(1000 + 3 * i, 0, 0, 0, 1, 1);
+        cc_circle c = tw_circle(1000 + 3 * i, 0, 0, 0, 1, 1);
         (void)cc_world_add_circle(w, &c);
     }
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 38.0));
@@ -502,7 +472,7 @@ static void test_large_obstacle_in_grid(void)
         TEST_ASSERT_DOUBLE_WITHIN(1e-9, 30 * sin(a), got.pos.y);
         TEST_ASSERT_DOUBLE_WITHIN(1e-12, cos(a), got.vel.x);
     }
-    TEST_ASSERT_EQUAL_UINT64(RING, stats(w).collisions);
+    TEST_ASSERT_EQUAL_UINT64(RING, tw_stats(w).collisions);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
     TEST_ASSERT_EQUAL_DOUBLE(0.0, got.pos.x);
     tw_free(&m);
@@ -515,7 +485,7 @@ static void test_moving_immovable(void)
 {
     tw_mem m;
     cc_world *w = world(&m, 2, 0, 1.0);
-    cc_circle paddle = circle(0, 0, 2, 0, 1, INFINITY), ball = circle(5, 0, 0, 0, 1, 1), got;
+    cc_circle paddle = tw_circle(0, 0, 2, 0, 1, INFINITY), ball = tw_circle(5, 0, 0, 0, 1, 1), got;
     (void)cc_world_add_circle(w, &paddle);
     (void)cc_world_add_circle(w, &ball);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 2.0));
@@ -564,7 +534,7 @@ static void test_churn(void)
         for (r = 0; r < 4; r++) { /* add where there is room */
             int tries;
             for (tries = 0; tries < 50; tries++) {
-                cc_circle nc = circle(1 + (L - 2) * tw_rand(&seed), 1 + (L - 2) * tw_rand(&seed),
+                cc_circle nc = tw_circle(1 + (L - 2) * tw_rand(&seed), 1 + (L - 2) * tw_rand(&seed),
                                       (r & 1) ? 2 * tw_rand(&seed) - 1 : 0.0, (r & 1) ? 2 * tw_rand(&seed) - 1 : 0.0,
                                       1, 1);
                 int j, free_ = 1, id;
@@ -582,7 +552,7 @@ static void test_churn(void)
         TEST_ASSERT_EQUAL_INT(0, tw_escapes(c, n, L, TW_OVERLAP_TOL));
         TEST_ASSERT_TRUE(tw_max_rel_overlap(c, n, 1.0) < TW_OVERLAP_TOL);
     }
-    TEST_ASSERT_TRUE(stats(w).collisions > 1000);
+    TEST_ASSERT_TRUE(tw_stats(w).collisions > 1000);
     TEST_ASSERT_TRUE(tw_canary_ok(&m));
     tw_free(&m);
 }
@@ -602,20 +572,20 @@ static void scaled_gas(double s, cc_circle *out, int n, uint64_t *events)
     d.max_circles = n;
     d.max_segments = 4;
     w = tw_make(&m, &d, 0);
-    walls[0] = segment(0, 0, L, 0);
-    walls[1] = segment(L, 0, L, L);
-    walls[2] = segment(L, L, 0, L);
-    walls[3] = segment(0, L, 0, 0);
+    walls[0] = tw_segment(0, 0, L, 0);
+    walls[1] = tw_segment(L, 0, L, L);
+    walls[2] = tw_segment(L, L, 0, L);
+    walls[3] = tw_segment(0, L, 0, 0);
     for (i = 0; i < 4; i++)
         (void)cc_world_add_segment(w, &walls[i]);
     for (i = 0; i < n; i++) {
-        cc_circle c = circle(s * (2.5 + 4.0 * (i % 9)), s * (2.5 + 4.0 * (i / 9)), s * (2 * tw_rand(&seed) - 1),
+        cc_circle c = tw_circle(s * (2.5 + 4.0 * (i % 9)), s * (2.5 + 4.0 * (i / 9)), s * (2 * tw_rand(&seed) - 1),
                              s * (2 * tw_rand(&seed) - 1), s * (0.5 + tw_rand(&seed)), 1 + tw_rand(&seed));
         (void)cc_world_add_circle(w, &c);
     }
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 50.0));
     TEST_ASSERT_EQUAL_INT(n, cc_world_get_circles(w, NULL, out, n));
-    *events = stats(w).events;
+    *events = tw_stats(w).events;
     tw_free(&m);
 }
 
@@ -653,15 +623,15 @@ static void test_lone_circle_in_grid_world(void)
 {
     tw_mem m;
     cc_world *w = world(&m, 100, 1, 1.0);
-    cc_circle a = circle(5, 0, -2, 0, 1, 1), got;
-    cc_segment s = segment(0, -5, 0, 5);
+    cc_circle a = tw_circle(5, 0, -2, 0, 1, 1), got;
+    cc_segment s = tw_segment(0, -5, 0, 5);
     (void)cc_world_add_segment(w, &s);
     (void)cc_world_add_circle(w, &a);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 3.0));
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
     TEST_ASSERT_EQUAL_DOUBLE(3.0, got.pos.x); /* wall at t = 2, then 1 back at speed 2 */
     TEST_ASSERT_EQUAL_DOUBLE(2.0, got.vel.x);
-    TEST_ASSERT_EQUAL_UINT64(1, stats(w).collisions);
+    TEST_ASSERT_EQUAL_UINT64(1, tw_stats(w).collisions);
     tw_free(&m);
 }
 

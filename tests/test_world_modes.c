@@ -10,18 +10,6 @@
 void setUp(void) {}
 void tearDown(void) {}
 
-static cc_circle circle(double x, double y, double vx, double vy, double r, double m)
-{
-    cc_circle c;
-    c.pos.x = x;
-    c.pos.y = y;
-    c.vel.x = vx;
-    c.vel.y = vy;
-    c.radius = r;
-    c.mass = m;
-    return c;
-}
-
 static cc_world *world(tw_mem *m, int mode, int cap, int segs)
 {
     cc_world_def d;
@@ -46,7 +34,7 @@ static double bullet_after_wall(int mode)
     tw_mem m;
     cc_world *w = world(&m, mode, 1, 1);
     cc_segment wall;
-    cc_circle bullet = circle(0, 0, 1e4, 0, 0.1, 1), got;
+    cc_circle bullet = tw_circle(0, 0, 1e4, 0, 0.1, 1), got;
     wall.a.x = 10;
     wall.a.y = -1;
     wall.b.x = 10;
@@ -74,7 +62,7 @@ static void test_discrete_push_apart(void)
 {
     tw_mem m;
     cc_world *w = world(&m, CC_MODE_DISCRETE, 2, 0);
-    cc_circle a = circle(0, 0, 1, 0, 1, 1), b = circle(3, 0, -1, 0, 1, 1), got;
+    cc_circle a = tw_circle(0, 0, 1, 0, 1, 1), b = tw_circle(3, 0, -1, 0, 1, 1), got;
     (void)cc_world_add_circle(w, &a);
     (void)cc_world_add_circle(w, &b);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));
@@ -98,7 +86,7 @@ static void wall_then_ball(int mode, cc_circle *a, cc_circle *b, uint64_t *n)
     tw_mem m;
     cc_world *w = world(&m, mode, 2, 1);
     cc_segment wall;
-    cc_circle ca = circle(2, 0, -1, 0, 1, 1), cb = circle(4.5, 0, 0, 0, 1, 1);
+    cc_circle ca = tw_circle(2, 0, -1, 0, 1, 1), cb = tw_circle(4.5, 0, 0, 0, 1, 1);
     wall.a.x = 0;
     wall.a.y = -5;
     wall.b.x = 0;
@@ -174,12 +162,12 @@ static void test_swept_fast_body_far_target(void)
     cc_circle c, got;
     int i, bullet, target;
     for (i = 0; i < N - 2; i++) { /* a row of slow circles far below the bullet's path */
-        c = circle(3.0 * i, -50, 0.01, 0, 1, 1);
+        c = tw_circle(3.0 * i, -50, 0.01, 0, 1, 1);
         (void)cc_world_add_circle(w, &c);
     }
-    c = circle(0, 0, 1000, 0, 1, 1);
+    c = tw_circle(0, 0, 1000, 0, 1, 1);
     bullet = cc_world_add_circle(w, &c);
-    c = circle(1000, 0, 0, 0, 1, 1);
+    c = tw_circle(1000, 0, 0, 0, 1, 1);
     target = cc_world_add_circle(w, &c);
     /* contact when the centres are 2 apart: x = 998 at t = 0.998; the bullet stops there */
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));

@@ -11,28 +11,6 @@
 void setUp(void) {}
 void tearDown(void) {}
 
-static cc_circle circle(double x, double y, double vx, double vy, double r, double m)
-{
-    cc_circle c;
-    c.pos.x = x;
-    c.pos.y = y;
-    c.vel.x = vx;
-    c.vel.y = vy;
-    c.radius = r;
-    c.mass = m;
-    return c;
-}
-
-static cc_segment segment(double ax, double ay, double bx, double by)
-{
-    cc_segment s;
-    s.a.x = ax;
-    s.a.y = ay;
-    s.b.x = bx;
-    s.b.y = by;
-    return s;
-}
-
 static cc_world *world(tw_mem *m, int cap, int segs, double e)
 {
     cc_world_def d;
@@ -42,14 +20,6 @@ static cc_world *world(tw_mem *m, int cap, int segs, double e)
     d.restitution = e;
     d.mode = CC_MODE_EXACT;
     return tw_make(m, &d, 0);
-}
-
-static cc_world_stats stats(const cc_world *w)
-{
-    cc_world_stats s;
-    s.struct_size = sizeof s;
-    (void)cc_world_get_stats(w, &s);
-    return s;
 }
 
 static cc_circle get(const cc_world *w, int id)
@@ -73,10 +43,10 @@ static void test_cradle(void)
         cc_world *w = world(&m, 16, 0, 1.0);
         cc_circle c;
         TEST_ASSERT_NOT_NULL(w);
-        c = circle(-6.0, 0.0, 1.0, 0.0, 1.0, 1.0);
+        c = tw_circle(-6.0, 0.0, 1.0, 0.0, 1.0, 1.0);
         TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
         for (i = 0; i + 1 < n; ++i) {
-            c = circle(2.0 * i, 0.0, 0.0, 0.0, 1.0, 1.0);
+            c = tw_circle(2.0 * i, 0.0, 0.0, 0.0, 1.0, 1.0);
             TEST_ASSERT_EQUAL_INT(i + 1, cc_world_add_circle(w, &c));
         }
         TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 10.0));
@@ -87,7 +57,7 @@ static void test_cradle(void)
             double x = i == 0 ? -2.0 : i == n - 1 ? 2.0 * (n - 2) + 6.0 : 2.0 * (i - 1);
             TEST_ASSERT_DOUBLE_WITHIN(1e-11, x, c.pos.x);
         }
-        TEST_ASSERT_EQUAL_UINT64(n - 1, stats(w).collisions);
+        TEST_ASSERT_EQUAL_UINT64(n - 1, tw_stats(w).collisions);
         TEST_ASSERT_TRUE(tw_canary_ok(&m));
         tw_free(&m);
     }
@@ -103,10 +73,10 @@ static void rack_state(cc_circle *c)
 {
     const double r3 = sqrt(3.0);
     int k, j, i = 1;
-    c[0] = circle(-3.0, 0.0, 1.0, 0.0, 1.0, 1.0);
+    c[0] = tw_circle(-3.0, 0.0, 1.0, 0.0, 1.0, 1.0);
     for (k = 0; k < 5; ++k)
         for (j = 0; j <= k; ++j)
-            c[i++] = circle(k * r3, 2.0 * j - k, 0.0, 0.0, 1.0, 1.0);
+            c[i++] = tw_circle(k * r3, 2.0 * j - k, 0.0, 0.0, 1.0, 1.0);
 }
 
 /* Runs the rack to time t with the balls added in the order order[0..16) (ball order[i] gets id
@@ -125,7 +95,7 @@ static void run_rack(double e, double t, const int *order, cc_circle *out, cc_wo
     for (i = 0; i < RACK; ++i)
         out[i] = get(w, ids[i]);
     if (st != NULL)
-        *st = stats(w);
+        *st = tw_stats(w);
     TEST_ASSERT_TRUE(tw_canary_ok(&m));
     tw_free(&m);
 }
@@ -221,9 +191,9 @@ static void test_two_impacts_at_one_instant(void)
     cc_circle c[3];
     tw_totals before, after;
     int i;
-    c[0] = circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0);
-    c[1] = circle(5.0 * c60, 5.0 * s60, -c60, -s60, 1.0, 1.0);
-    c[2] = circle(5.0 * c60, -5.0 * s60, -c60, s60, 1.0, 1.0);
+    c[0] = tw_circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0);
+    c[1] = tw_circle(5.0 * c60, 5.0 * s60, -c60, -s60, 1.0, 1.0);
+    c[2] = tw_circle(5.0 * c60, -5.0 * s60, -c60, s60, 1.0, 1.0);
     before = tw_sum(c, 3);
     for (i = 0; i < 3; ++i)
         TEST_ASSERT_EQUAL_INT(i, cc_world_add_circle(w, &c[i]));
@@ -238,7 +208,7 @@ static void test_two_impacts_at_one_instant(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-12, before.px, after.px);
     TEST_ASSERT_DOUBLE_WITHIN(1e-12, before.py, after.py);
     TEST_ASSERT_DOUBLE_WITHIN(1e-12, before.energy, after.energy);
-    TEST_ASSERT_EQUAL_UINT64(2, stats(w).collisions);
+    TEST_ASSERT_EQUAL_UINT64(2, tw_stats(w).collisions);
     tw_free(&m);
 }
 
@@ -258,11 +228,11 @@ static void test_two_impacts_turned_far_and_late(void)
     cc_circle c[3];
     double da, dc;
     int i;
-    c[0] = circle(X, Y, 0.0, 0.0, 1.0, 1.0);
+    c[0] = tw_circle(X, Y, 0.0, 0.0, 1.0, 1.0);
     const double ax = c60 * ux + s60 * px, ay = c60 * uy + s60 * py; /* from B towards A */
     const double cx = c60 * ux - s60 * px, cy = c60 * uy - s60 * py; /* from B towards C */
-    c[1] = circle(X + D * ax, Y + D * ay, -ax, -ay, 1.0, 1.0);
-    c[2] = circle(X + D * cx, Y + D * cy, -cx, -cy, 1.0, 1.0);
+    c[1] = tw_circle(X + D * ax, Y + D * ay, -ax, -ay, 1.0, 1.0);
+    c[2] = tw_circle(X + D * cx, Y + D * cy, -cx, -cy, 1.0, 1.0);
     for (i = 0; i < 3; ++i)
         TEST_ASSERT_EQUAL_INT(i, cc_world_add_circle(w, &c[i]));
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1004.0));
@@ -278,7 +248,7 @@ static void test_two_impacts_turned_far_and_late(void)
     da = (c[1].pos.x - X) * px + (c[1].pos.y - Y) * py;
     dc = (c[2].pos.x - X) * px + (c[2].pos.y - Y) * py;
     TEST_ASSERT_DOUBLE_WITHIN(1e-8, -da, dc);
-    TEST_ASSERT_EQUAL_UINT64(2, stats(w).collisions);
+    TEST_ASSERT_EQUAL_UINT64(2, tw_stats(w).collisions);
     tw_free(&m);
 }
 
@@ -291,8 +261,8 @@ static void test_chain_with_a_gap(void)
 {
     tw_mem m;
     cc_world *w = world(&m, 4, 0, 1.0);
-    cc_circle a = circle(-4.0, 0.0, 1.0, 0.0, 1.0, 2.0), b = circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
-              c = circle(2.5, 0.0, 0.0, 0.0, 1.0, 1.0);
+    cc_circle a = tw_circle(-4.0, 0.0, 1.0, 0.0, 1.0, 2.0), b = tw_circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
+              c = tw_circle(2.5, 0.0, 0.0, 0.0, 1.0, 1.0);
     (void)cc_world_add_circle(w, &a);
     (void)cc_world_add_circle(w, &b);
     (void)cc_world_add_circle(w, &c);
@@ -305,7 +275,7 @@ static void test_chain_with_a_gap(void)
     TEST_ASSERT_DOUBLE_WITHIN(1e-12, 4.0 / 3.0, c.vel.x);
     TEST_ASSERT_DOUBLE_WITHIN(1e-12, -1.5 + 1.5 / 9.0, a.pos.x);
     TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.5 + 1.5 * 4.0 / 9.0, b.pos.x);
-    TEST_ASSERT_EQUAL_UINT64(3, stats(w).collisions);
+    TEST_ASSERT_EQUAL_UINT64(3, tw_stats(w).collisions);
     tw_free(&m);
 }
 
@@ -322,8 +292,8 @@ static void test_corner_at_45_degrees(void)
         const double e = es[k];
         tw_mem m;
         cc_world *w = world(&m, 4, 2, e);
-        cc_segment s1 = segment(0.0, 0.0, 0.0, 20.0), s2 = segment(0.0, 0.0, 20.0, 0.0);
-        cc_circle c = circle(5.0, 5.0, -1.0, -1.0, 1.0, 1.0);
+        cc_segment s1 = tw_segment(0.0, 0.0, 0.0, 20.0), s2 = tw_segment(0.0, 0.0, 20.0, 0.0);
+        cc_circle c = tw_circle(5.0, 5.0, -1.0, -1.0, 1.0, 1.0);
         TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &s1));
         TEST_ASSERT_EQUAL_INT(1, cc_world_add_segment(w, &s2));
         TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
@@ -333,7 +303,7 @@ static void test_corner_at_45_degrees(void)
         TEST_ASSERT_DOUBLE_WITHIN(1e-12, e, c.vel.y);
         TEST_ASSERT_DOUBLE_WITHIN(1e-11, 1.0 + 6.0 * e, c.pos.x);
         TEST_ASSERT_DOUBLE_WITHIN(1e-11, 1.0 + 6.0 * e, c.pos.y);
-        TEST_ASSERT_EQUAL_UINT64(2, stats(w).collisions);
+        TEST_ASSERT_EQUAL_UINT64(2, tw_stats(w).collisions);
         tw_free(&m);
     }
 }
@@ -346,8 +316,8 @@ static void test_unequal_masses(void)
 {
     tw_mem m;
     cc_world *w = world(&m, 4, 0, 1.0);
-    cc_circle a = circle(-4.0, 0.0, 1.0, 0.0, 1.0, 2.0), b = circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
-              c = circle(2.0, 0.0, 0.0, 0.0, 1.0, 1.0);
+    cc_circle a = tw_circle(-4.0, 0.0, 1.0, 0.0, 1.0, 2.0), b = tw_circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0),
+              c = tw_circle(2.0, 0.0, 0.0, 0.0, 1.0, 1.0);
     (void)cc_world_add_circle(w, &a);
     (void)cc_world_add_circle(w, &b);
     (void)cc_world_add_circle(w, &c);
@@ -368,10 +338,10 @@ static void test_immovable_circle_and_wall(void)
     const double h = 1.0 / sqrt(2.0);
     tw_mem m;
     cc_world *w = world(&m, 4, 1, 1.0);
-    cc_segment s = segment(-1.0, -10.0, -1.0, 10.0);
-    cc_circle b = circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0), got;
-    cc_circle o = circle(0.0, 2.0, 0.0, 0.0, 1.0, INFINITY); /* immovable */
-    cc_circle a = circle(4.0 * h, -4.0 * h, -h, h, 1.0, 1.0);
+    cc_segment s = tw_segment(-1.0, -10.0, -1.0, 10.0);
+    cc_circle b = tw_circle(0.0, 0.0, 0.0, 0.0, 1.0, 1.0), got;
+    cc_circle o = tw_circle(0.0, 2.0, 0.0, 0.0, 1.0, INFINITY); /* immovable */
+    cc_circle a = tw_circle(4.0 * h, -4.0 * h, -h, h, 1.0, 1.0);
     (void)cc_world_add_segment(w, &s);
     TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &b));
     TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &o));

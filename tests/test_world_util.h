@@ -37,6 +37,37 @@ static inline cc_world *tw_make(tw_mem *m, const cc_world_def *def, size_t extra
     return st == CC_OK ? w : NULL;
 }
 
+/* A circle, a wall and a world's counters in one expression. */
+static inline cc_circle tw_circle(double x, double y, double vx, double vy, double r, double m)
+{
+    cc_circle c;
+    c.pos.x = x;
+    c.pos.y = y;
+    c.vel.x = vx;
+    c.vel.y = vy;
+    c.radius = r;
+    c.mass = m;
+    return c;
+}
+
+static inline cc_segment tw_segment(double ax, double ay, double bx, double by)
+{
+    cc_segment s;
+    s.a.x = ax;
+    s.a.y = ay;
+    s.b.x = bx;
+    s.b.y = by;
+    return s;
+}
+
+static inline cc_world_stats tw_stats(const cc_world *w)
+{
+    cc_world_stats s;
+    s.struct_size = sizeof s;
+    (void)cc_world_get_stats(w, &s);
+    return s;
+}
+
 static inline int tw_canary_ok(const tw_mem *m)
 {
     size_t i;
