@@ -207,8 +207,8 @@ void demo_canvas_disc(demo_canvas *c, double cx, double cy, double r, demo_rgb c
     paint(c, &s, cx - r, cy - r, cx + r, cy + r, col, alpha, mode);
 }
 
-void demo_canvas_capsule(demo_canvas *c, double ax, double ay, double bx, double by, double hw,
-                         demo_rgb col, double alpha, demo_blend mode)
+/* The segment a-b thickened by hw on each side, as paint() reads it. */
+static shape capsule_shape(double ax, double ay, double bx, double by, double hw)
 {
     shape s = {1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
     double len2;
@@ -222,6 +222,13 @@ void demo_canvas_capsule(demo_canvas *c, double ax, double ay, double bx, double
     s.dy = by - ay;
     len2 = s.dx * s.dx + s.dy * s.dy;
     s.inv_len2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
+    return s;
+}
+
+void demo_canvas_capsule(demo_canvas *c, double ax, double ay, double bx, double by, double hw,
+                         demo_rgb col, double alpha, demo_blend mode)
+{
+    shape s = capsule_shape(ax, ay, bx, by, hw);
     paint(c, &s, (ax < bx ? ax : bx) - hw, (ay < by ? ay : by) - hw, (ax > bx ? ax : bx) + hw,
           (ay > by ? ay : by) + hw, col, alpha, mode);
 }
@@ -237,18 +244,7 @@ void demo_mask_begin(demo_canvas *c)
 void demo_mask_capsule(demo_canvas *c, double ax, double ay, double bx, double by, double hw,
                        double alpha, demo_rgb col, demo_blend mode)
 {
-    shape s = {1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
-    double len2;
-    s.ax = ax;
-    s.ay = ay;
-    s.bx = bx;
-    s.by = by;
-    s.hw = hw;
-    s.thin = hw < 0.5;
-    s.dx = bx - ax;
-    s.dy = by - ay;
-    len2 = s.dx * s.dx + s.dy * s.dy;
-    s.inv_len2 = len2 > 0.0 ? 1.0 / len2 : 0.0;
+    shape s = capsule_shape(ax, ay, bx, by, hw);
     paint_or_mask(c, &s, (ax < bx ? ax : bx) - hw, (ay < by ? ay : by) - hw,
                   (ax > bx ? ax : bx) + hw, (ay > by ? ay : by) + hw, col, alpha, mode,
                   c->mask != NULL);
