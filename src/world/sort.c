@@ -30,35 +30,34 @@ static int cc__less(const cc__sort_entry *a, const cc__sort_entry *b)
     return a->key < b->key || (a->key == b->key && a->idx < b->idx);
 }
 
+/* Moves e[root] down its subtree within e[0, n) until both children come before it. */
+static void cc__sift(cc__sort_entry *e, int root, int n)
+{
+    int child;
+    cc__sort_entry t;
+    for (; (child = 2 * root + 1) < n; root = child) {
+        if (child + 1 < n && cc__less(&e[child], &e[child + 1]))
+            child++;
+        if (!cc__less(&e[root], &e[child]))
+            break;
+        t = e[root];
+        e[root] = e[child];
+        e[child] = t;
+    }
+}
+
 /* Heapsort: in place, O(n log n) at worst, no recursion, and deterministic. */
 static void cc__heapsort(cc__sort_entry *e, int n)
 {
-    int start, end, root, child;
+    int start, end;
     cc__sort_entry t;
-    for (start = n / 2 - 1; start >= 0; start--) {
-        for (root = start; (child = 2 * root + 1) < n; root = child) {
-            if (child + 1 < n && cc__less(&e[child], &e[child + 1]))
-                child++;
-            if (!cc__less(&e[root], &e[child]))
-                break;
-            t = e[root];
-            e[root] = e[child];
-            e[child] = t;
-        }
-    }
+    for (start = n / 2 - 1; start >= 0; start--)
+        cc__sift(e, start, n);
     for (end = n - 1; end > 0; end--) {
         t = e[0];
         e[0] = e[end];
         e[end] = t;
-        for (root = 0; (child = 2 * root + 1) < end; root = child) {
-            if (child + 1 < end && cc__less(&e[child], &e[child + 1]))
-                child++;
-            if (!cc__less(&e[root], &e[child]))
-                break;
-            t = e[root];
-            e[root] = e[child];
-            e[child] = t;
-        }
+        cc__sift(e, 0, end);
     }
 }
 
