@@ -292,9 +292,13 @@ typedef struct cc_contact_event {
     double impulse; /* magnitude of the normal impulse applied (mass * velocity) */
 } cc_contact_event;
 
-/* Called during cc_world_step. It may read the world (get_circle, time, stats) but not change
- * it: add, set, remove and step called from inside return CC_ERR_INVALID and do nothing. Record
- * what you need and act on it after the step (e.g. remove a pocketed ball). */
+/* Called for each impulse, from inside the call that applied it: cc_world_step (every mode),
+ * and in EXACT also cc_world_add_circle and cc_world_set_circle (a circle put on top of another
+ * is pushed apart and, when the pair approaches, given its impulse at once). No other call fires
+ * it. It may read the world (get_circle, get_circles, time, stats) but not change it: add, set,
+ * remove, add_segment and step called from inside return CC_ERR_INVALID and do nothing, whichever
+ * call fired it. Record what you need and act on it after that call returns (e.g. remove a
+ * pocketed ball after the step). */
 typedef void (*cc_contact_fn)(const cc_contact_event *event, void *user);
 
 /* Fill with cc_world_def_init, then change what you need. struct_size comes first so that a
@@ -334,7 +338,7 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
 /* Adds a circle whose state c holds at the current world time. Returns its id (>= 0, stable for
  * its lifetime; removed ids may be reused), CC_ERR_FULL, or CC_ERR_INVALID (NULL, invalid
  * circle, or called from the contact callback). See "Overlaps" above for a circle added on top
- * of others. */
+ * of others: in EXACT that may call the contact callback before this returns. */
 CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c);
 
 /* Adds a static wall (a == b: a point). Returns its id (0, 1, ... in order of addition),
@@ -357,7 +361,8 @@ CC_API int cc_world_step(cc_world *w, double dt);
 CC_API int cc_world_get_circle(const cc_world *w, int id, cc_circle *out);
 
 /* Replaces a circle's state at the current world time (position, velocity, radius and mass may
- * all change; the id stays). CC_OK, CC_ERR_NOT_FOUND, CC_ERR_INVALID (as add). */
+ * all change; the id stays). CC_OK, CC_ERR_NOT_FOUND, CC_ERR_INVALID (as add). Like add, in EXACT
+ * it may call the contact callback before it returns. */
 CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c);
 
 /* Copies up to capacity live circles in increasing id order into ids[] and out[] (either may be

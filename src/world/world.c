@@ -30,17 +30,33 @@ CC_API void cc_world_def_init(cc_world_def *def)
     def->user = NULL;
 }
 
-/* The caller's def over our defaults: fields beyond its struct_size keep their default. */
+size_t cc__whole_fields(size_t n, const size_t *ends, int count)
+{
+    size_t fit = 0;
+    int i;
+    for (i = 0; i < count && ends[i] <= n; i++)
+        fit = ends[i];
+    return fit;
+}
+
+#define CC__END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
+
+/* The caller's def over our defaults: fields beyond its struct_size (and a field it cuts) keep
+ * their default. */
 static int cc__read_def(const cc_world_def *in, cc_world_def *out)
 {
-    size_t n;
+    static const size_t ends[] = {
+        CC__END(cc_world_def, struct_size), CC__END(cc_world_def, max_circles),
+        CC__END(cc_world_def, max_segments), CC__END(cc_world_def, mode),
+        CC__END(cc_world_def, restitution), CC__END(cc_world_def, rest_speed),
+        CC__END(cc_world_def, cell_size), CC__END(cc_world_def, max_events),
+        CC__END(cc_world_def, on_contact), CC__END(cc_world_def, user)};
     if (in == NULL)
         return CC_ERR_INVALID;
     if (in->struct_size < CC__DEF_MIN)
         return CC_ERR_VERSION;
     cc_world_def_init(out);
-    n = in->struct_size < sizeof *out ? in->struct_size : sizeof *out;
-    memcpy(out, in, n);
+    memcpy(out, in, cc__whole_fields(in->struct_size, ends, (int)(sizeof ends / sizeof ends[0])));
     out->struct_size = sizeof *out;
     if (out->max_circles < 0 || out->max_circles > CC__MAX_CAPACITY || out->max_segments < 0 ||
         out->max_segments > CC__MAX_CAPACITY || out->mode < CC_MODE_EXACT || out->mode > CC_MODE_DISCRETE ||
@@ -230,6 +246,16 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
         cc__settle_body(w, id);
 }
 
+/* cc__put with the world marked busy: in EXACT a circle put on top of others is pushed apart and
+ * may take an impulse at once, which calls on_contact; from there the mutators must be refused
+ * exactly as during a step (the grid and queue are being updated). */
+static void cc__put_guarded(cc_world *w, int id, const cc_circle *c)
+{
+    w->busy = 1;
+    cc__put(w, id, c);
+    w->busy = 0;
+}
+
 CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
 {
     int id;
@@ -246,7 +272,7 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
         CC__ARR(w, cc__body, off_body)[id].count = 0; /* first use of this slot of memory */
     }
     w->n_circles++;
-    cc__put(w, CC__ARR(w, int32_t, off_id2idx)[id], c);
+    cc__put_guarded(w, CC__ARR(w, int32_t, off_id2idx)[id], c);
     return id;
 }
 
@@ -269,7 +295,7 @@ CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c)
     if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
     cc__unfile(w, k);
-    cc__put(w, k, c);
+    cc__put_guarded(w, k, c);
     return CC_OK;
 }
 
@@ -369,14 +395,19 @@ CC_API int cc_world_step(cc_world *w, double dt)
 
 CC_API int cc_world_get_stats(const cc_world *w, cc_world_stats *out)
 {
+    static const size_t ends[] = {
+        CC__END(cc_world_stats, struct_size), CC__END(cc_world_stats, collisions),
+        CC__END(cc_world_stats, events), CC__END(cc_world_stats, stale_events),
+        CC__END(cc_world_stats, pairs_tested), CC__END(cc_world_stats, cell_crossings),
+        CC__END(cc_world_stats, max_overlap)};
+    const size_t from = sizeof out->struct_size; /* the caller's struct_size is kept */
     size_t n;
     if (!cc__world_ok(w) || out == NULL)
         return CC_ERR_INVALID;
-    if (out->struct_size < offsetof(cc_world_stats, collisions) + sizeof(uint64_t))
+    if (out->struct_size < CC__END(cc_world_stats, collisions))
         return CC_ERR_VERSION;
-    n = out->struct_size < sizeof *out ? out->struct_size : sizeof *out;
-    /* whole fields only, the caller's struct_size kept */
-    memcpy((unsigned char *)out + sizeof(size_t), (const unsigned char *)&w->stats + sizeof(size_t),
-           n - sizeof(size_t));
+    /* whole fields only: a struct_size that ends inside a field leaves that field untouched */
+    n = cc__whole_fields(out->struct_size, ends, (int)(sizeof ends / sizeof ends[0]));
+    memcpy((unsigned char *)out + from, (const unsigned char *)&w->stats + from, n - from);
     return CC_OK;
 }

@@ -109,6 +109,9 @@ struct cc_world {
 #define CC__CELL_MAX ((int32_t)1 << 30)
 
 /* ---- world.c ---- */
+/* The struct_size handshake: how many of a struct's first n bytes hold whole fields, given the
+ * end offsets of its fields in ascending order (a field cut by n is not counted). */
+size_t cc__whole_fields(size_t n, const size_t *ends, int count);
 /* position of body b at time t (its lazy state carried forward) */
 static inline double cc__bx(const cc__body *b, double t) { return b->px + b->vx * (t - b->t); }
 static inline double cc__by(const cc__body *b, double t) { return b->py + b->vy * (t - b->t); }

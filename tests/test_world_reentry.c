@@ -1,0 +1,281 @@
+/* The contact callback may read the world but never change it, whichever call fired it: a step,
+ * or (EXACT) an add or set that pushes a circle apart from another and gives the pair its
+ * impulse at once. Every mutator called from inside is refused with CC_ERR_INVALID and changes
+ * nothing, so the world ends bit for bit where a world with a callback that does nothing ends.
+ * Also the struct_size handshake of cc_world_get_stats and of the def: a size that ends inside
+ * a field leaves that field alone (issue 19). */
+#include "unity.h"
+
+#include "test_world_util.h"
+
+#include <stddef.h>
+#include <stdio.h>
+
+void setUp(void) {}
+void tearDown(void) {}
+
+enum { MUT_ADD, MUT_REMOVE_A, MUT_REMOVE_B, MUT_REMOVE_LAST, MUT_SET, MUT_STEP, MUT_SEGMENT, MUT_COUNT };
+enum { FIRE_ADD, FIRE_SET, FIRE_STEP, FIRE_COUNT };
+
+static const char *const mut_name[MUT_COUNT] = {"add", "remove a", "remove b", "remove newest", "set", "step",
+                                                "add_segment"};
+static const char *const fire_name[FIRE_COUNT] = {"add", "set", "step"};
+
+/* What the callback does and what it saw. */
+typedef struct probe {
+    cc_world *w;
+    int mutator; /* -1: nothing */
+    int newest;  /* the id most recently added (a circle whose own add may be firing) */
+    int calls;
+    int refused; /* calls answered CC_ERR_INVALID */
+    int tried;
+} probe;
+
+static void on_contact(const cc_contact_event *e, void *user)
+{
+    probe *p = (probe *)user;
+    cc_circle c = tw_circle(e->point.x, e->point.y, 0.5, 0.25, 1, 1); /* on top of the contact */
+    cc_segment s = tw_segment(-50, -50, 50, -50);
+    int r = 0;
+    p->calls++;
+    if (p->mutator < 0)
+        return;
+    switch (p->mutator) {
+    case MUT_ADD: r = cc_world_add_circle(p->w, &c); break;
+    case MUT_REMOVE_A: r = cc_world_remove_circle(p->w, e->a); break;
+    case MUT_REMOVE_B: r = cc_world_remove_circle(p->w, e->b >= 0 ? e->b : e->a); break;
+    case MUT_REMOVE_LAST: r = cc_world_remove_circle(p->w, p->newest); break;
+    case MUT_SET: r = cc_world_set_circle(p->w, e->a, &c); break;
+    case MUT_STEP: r = cc_world_step(p->w, 1.0); break;
+    case MUT_SEGMENT: r = cc_world_add_segment(p->w, &s); break;
+    default: break;
+    }
+    p->tried++;
+    p->refused += r == CC_ERR_INVALID;
+}
+
+/* A scene whose every entry point fires the callback: a and b at rest, c bouncing between walls,
+ * then (FIRE_ADD) d added overlapping a and approaching it, (FIRE_SET) b set overlapping a and
+ * approaching it, or (FIRE_STEP) a plain step with impacts. Returns the world. */
+static cc_world *run(tw_mem *m, int mode, int fire, probe *p)
+{
+    cc_world_def d;
+    cc_world *w;
+    cc_circle a = tw_circle(0, 0, 0, 0, 1, 1), b = tw_circle(5, 0, 0, 0, 1, 1), c = tw_circle(0, 10, 3, 0, 1, 1);
+    cc_circle onto = tw_circle(1.5, 0, -1, 0, 1, 1); /* overlaps a by 0.5, closing at speed 1 */
+    cc_segment l = tw_segment(-20, -30, -20, 30), r = tw_segment(20, -30, 20, 30);
+    int k;
+    cc_world_def_init(&d);
+    d.max_circles = 64;
+    d.max_segments = 4;
+    d.mode = mode;
+    d.on_contact = on_contact;
+    d.user = p;
+    w = tw_make(m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    p->w = w;
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &a));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &b));
+    TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &c));
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &l));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_add_segment(w, &r));
+    p->newest = 2;
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.0)); /* everything filed: add and set act at once */
+    if (fire == FIRE_ADD) {
+        p->newest = 3;
+        TEST_ASSERT_EQUAL_INT(3, cc_world_add_circle(w, &onto));
+    } else if (fire == FIRE_SET) {
+        p->newest = 1;
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle(w, 1, &onto));
+    }
+    for (k = 0; k < 200; k++) /* steps of 0.1: c moves 0.3 per step, DISCRETE catches it too */
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.1));
+    TEST_ASSERT_TRUE(tw_canary_ok(m));
+    return w;
+}
+
+/* Every live circle's state, bit for bit, and the counters. */
+static void assert_same_world(const cc_world *x, const cc_world *y, const char *what)
+{
+    cc_circle cx[8], cy[8];
+    int ix[8], iy[8], nx = cc_world_get_circles(x, ix, cx, 8), ny = cc_world_get_circles(y, iy, cy, 8);
+    cc_world_stats sx = tw_stats(x), sy = tw_stats(y);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(ny, nx, what);
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(iy, ix, sizeof ix[0] * (size_t)nx, what);
+    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(cy, cx, sizeof cx[0] * (size_t)nx, what);
+    TEST_ASSERT_EQUAL_UINT64_MESSAGE(sy.collisions, sx.collisions, what);
+    TEST_ASSERT_EQUAL_UINT64_MESSAGE(sy.events, sx.events, what);
+    TEST_ASSERT_EQUAL_DOUBLE_MESSAGE(cc_world_time(y), cc_world_time(x), what);
+}
+
+/* Each mutator from a callback fired by add, set and step, in each mode: refused, every time,
+ * and the world ends exactly as with a callback that does nothing. In SWEPT and DISCRETE add and
+ * set act at the next step, so the callback is fired by steps only (and still refused). */
+static void test_every_mutator_refused_from_every_callback(void)
+{
+    int mode, fire, mut;
+    char what[128];
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
+        for (fire = 0; fire < FIRE_COUNT; fire++) {
+            tw_mem mq;
+            probe quiet = {NULL, -1, 0, 0, 0, 0};
+            cc_world *wq = run(&mq, mode, fire, &quiet);
+            TEST_ASSERT_TRUE(quiet.calls > 0);
+            for (mut = 0; mut < MUT_COUNT; mut++) {
+                tw_mem m;
+                probe p = {NULL, 0, 0, 0, 0, 0};
+                cc_world *w;
+                p.mutator = mut;
+                w = run(&m, mode, fire, &p);
+                snprintf(what, sizeof what, "mode %d, fired by %s, callback calls %s", mode, fire_name[fire], mut_name[mut]);
+                TEST_ASSERT_EQUAL_INT_MESSAGE(quiet.calls, p.calls, what);
+                TEST_ASSERT_EQUAL_INT_MESSAGE(p.tried, p.refused, what);
+                assert_same_world(w, wq, what);
+                tw_free(&m);
+            }
+            tw_free(&mq);
+        }
+}
+
+/* The issue's reproducer: a world stepped once with a at rest; b added overlapping a and
+ * approaching it fires the callback from inside the add, and the callback's add is refused. */
+static cc_world *g_world;
+static int g_first_add;
+static void add_on_first_call(const cc_contact_event *e, void *user)
+{
+    cc_circle c = tw_circle(10, 0, 0, 0, 1, 1);
+    (void)e;
+    (void)user;
+    if (g_first_add == 1000)
+        g_first_add = cc_world_add_circle(g_world, &c);
+}
+
+static void test_add_from_add_callback_is_refused(void)
+{
+    cc_world_def d;
+    tw_mem m;
+    cc_circle a = tw_circle(0, 0, 0, 0, 1, 1), b = tw_circle(1.5, 0, -1, 0, 1, 1);
+    cc_world_def_init(&d);
+    d.max_circles = 64;
+    d.on_contact = add_on_first_call;
+    g_world = tw_make(&m, &d, 0);
+    g_first_add = 1000;
+    TEST_ASSERT_NOT_NULL(g_world);
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(g_world, &a));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(g_world, 0.0));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(g_world, &b)); /* fires the callback */
+    TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, g_first_add);
+    TEST_ASSERT_EQUAL_INT(2, cc_world_get_circles(g_world, NULL, NULL, 0));
+    tw_free(&m);
+}
+
+/* Nested adds on top of the contact point, had they been accepted, re-entered the grid's
+ * bookkeeping while it was being updated. Now each is refused; the world stays consistent: it
+ * steps on (a bounded number of events), keeps every circle, and no two overlap beyond rounding. */
+static void test_pile_of_adds_from_callbacks_keeps_world_consistent(void)
+{
+    int mode;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++) {
+        tw_mem m;
+        probe p = {NULL, MUT_ADD, 0, 0, 0, 0};
+        cc_world *w = run(&m, mode, FIRE_ADD, &p);
+        cc_circle c[8];
+        int n = cc_world_get_circles(w, NULL, c, 8), i, j;
+        cc_world_stats s;
+        TEST_ASSERT_EQUAL_INT(4, n);
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 100.0));
+        s = tw_stats(w);
+        TEST_ASSERT_TRUE(s.events < 100000); /* finite work: no loop */
+        n = cc_world_get_circles(w, NULL, c, 8);
+        for (i = 0; i < n && mode == CC_MODE_EXACT; i++)
+            for (j = i + 1; j < n; j++) {
+                double dx = c[j].pos.x - c[i].pos.x, dy = c[j].pos.y - c[i].pos.y;
+                TEST_ASSERT_TRUE(sqrt(dx * dx + dy * dy) > c[i].radius + c[j].radius - 1e-10);
+            }
+        tw_free(&m);
+    }
+}
+
+/* cc_world_get_stats with every struct_size from the smallest accepted to the whole struct:
+ * exactly the fields that end within it are written (a cut field is untouched), struct_size is
+ * kept. Field ends are taken from offsetof, so the test holds on 32-bit targets too. */
+static void test_stats_size_inside_every_field(void)
+{
+    static const size_t ends[] = {
+        offsetof(cc_world_stats, collisions) + sizeof(uint64_t), offsetof(cc_world_stats, events) + sizeof(uint64_t),
+        offsetof(cc_world_stats, stale_events) + sizeof(uint64_t),
+        offsetof(cc_world_stats, pairs_tested) + sizeof(uint64_t),
+        offsetof(cc_world_stats, cell_crossings) + sizeof(uint64_t),
+        offsetof(cc_world_stats, max_overlap) + sizeof(double)};
+    tw_mem m;
+    probe p = {NULL, -1, 0, 0, 0, 0};
+    cc_world *w = run(&m, CC_MODE_EXACT, FIRE_STEP, &p);
+    cc_world_stats whole = tw_stats(w);
+    size_t size, k;
+    for (size = ends[0]; size <= sizeof(cc_world_stats); size++) {
+        unsigned char buf[sizeof(cc_world_stats)];
+        size_t written = 0;
+        cc_world_stats s;
+        for (k = 0; k < sizeof ends / sizeof ends[0]; k++)
+            if (ends[k] <= size)
+                written = ends[k];
+        memset(buf, 0xEE, sizeof buf);
+        memcpy(buf, &size, sizeof size); /* struct_size */
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_stats(w, (cc_world_stats *)(void *)buf));
+        memcpy(&s, buf, sizeof s);
+        TEST_ASSERT_EQUAL_UINT64(size, s.struct_size);
+        /* the written part equals the whole struct's, the rest is untouched */
+        TEST_ASSERT_EQUAL_MEMORY((const unsigned char *)&whole + sizeof(size_t), buf + sizeof(size_t),
+                                 written - sizeof(size_t));
+        for (k = written; k < sizeof buf; k++)
+            TEST_ASSERT_EQUAL_INT(0xEE, buf[k]);
+    }
+    tw_free(&m);
+}
+
+/* A def whose struct_size ends inside max_events: max_events keeps its default (1e7), not a
+ * mixture of the caller's bytes and the default's (on a little-endian machine the caller's low
+ * half, 1, with the default's high half, 0, would cap every step at one event). */
+static void test_def_size_inside_a_field(void)
+{
+    cc_world_def d;
+    tw_mem m, whole;
+    cc_world *w, *ref;
+    /* a runs into b, b into c: at least two events in the step */
+    cc_circle a = tw_circle(0, 0, 0.5, 0, 1, 1), b = tw_circle(3, 0, 0, 0, 1, 1), c = tw_circle(6, 0, 0, 0, 1, 1);
+    cc_world_def_init(&d);
+    d.max_circles = 4;
+    d.restitution = 0.5;
+    d.max_events = 1;
+    d.struct_size = offsetof(cc_world_def, max_events) + 4;
+    w = tw_make(&m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    cc_world_def_init(&d);
+    d.max_circles = 4;
+    d.restitution = 0.5;
+    ref = tw_make(&whole, &d, 0);
+    TEST_ASSERT_NOT_NULL(ref);
+    (void)cc_world_add_circle(w, &a);
+    (void)cc_world_add_circle(w, &b);
+    (void)cc_world_add_circle(w, &c);
+    (void)cc_world_add_circle(ref, &a);
+    (void)cc_world_add_circle(ref, &b);
+    (void)cc_world_add_circle(ref, &c);
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 100.0));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(ref, 100.0));
+    TEST_ASSERT_TRUE(tw_stats(w).collisions >= 2);
+    assert_same_world(w, ref, "def cut inside max_events");
+    tw_free(&m);
+    tw_free(&whole);
+}
+
+int main(void)
+{
+    UNITY_BEGIN();
+    RUN_TEST(test_every_mutator_refused_from_every_callback);
+    RUN_TEST(test_add_from_add_callback_is_refused);
+    RUN_TEST(test_pile_of_adds_from_callbacks_keeps_world_consistent);
+    RUN_TEST(test_stats_size_inside_every_field);
+    RUN_TEST(test_def_size_inside_a_field);
+    return UNITY_END();
+}
