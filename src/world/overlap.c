@@ -91,10 +91,10 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
                 for (sl = cc__row_slot(w, x, y, sl, x == cx - 1), j = slot[sl]; j >= 0; j = B[j].next)
                     if (B[j].cx == x && B[j].cy == y && j != i && (!only_higher || j > i))
                         cc__unoverlap_pair(w, i, j);
-        if (!only_higher)
+        if (!only_higher) /* large circles may be kinematic: carried to now like any other */
             for (j = w->large_head; j >= 0; j = B[j].next)
                 if (j != i)
-                    (void)cc__world_unoverlap(w, i, j, -1);
+                    cc__unoverlap_pair(w, i, j);
     }
     cc__unoverlap_walls(w, i, NULL);
 }

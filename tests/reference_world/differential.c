@@ -1,0 +1,599 @@
+/* Differential runs (see differential.h): random scenes, the simulators they are played through,
+ * and the comparison of what each call did. */
+#include "differential.h"
+
+#include "reference_world.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define DW_LOG_MAX 64      /* contact events compared per call (a step, an add, a set) */
+#define DW_MAX_CIRCLES 128 /* circles in a scene, at most */
+
+/* What rounding may explain (see the comparison below). Times and positions are compared
+ * relative to the scene's scales: T = L / V, L = its extent, V = its largest speed. */
+#define DW_TIE 1e-6      /* two events closer than this * (|t| + T): their order is rounding's */
+#define DW_GRAZE 1e-6    /* a pair passing within this * R of contact: hit or miss is rounding's */
+#define DW_SLOW 1e-3     /* an approach within this ratio of the rounding threshold */
+#define DW_SLACK 1e-6    /* a contact of a cluster with a normal speed below this * its speeds */
+#define DW_APART 1e-9    /* states further apart than this * L: no longer the same scene */
+#define DW_T_TOL 1e-9    /* matched events: times within this * (|t| + T) */
+#define DW_J_TOL 1e-7    /* impulses within this * (|J| + m V), normals within this */
+#define DW_FRESH 1e-13   /* states this close: only rounding separates them (for the figures) */
+#define DW_GROW 1e6      /* what one event may make of a difference in the states before it */
+
+int dw_trace;
+
+/* ---- random numbers (SplitMix64: the same sequence everywhere) ----------------------------- */
+
+typedef struct dw_rng {
+    uint64_t s;
+} dw_rng;
+
+static uint64_t rng_next(dw_rng *r)
+{
+    uint64_t z = (r->s += UINT64_C(0x9E3779B97F4A7C15));
+    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
+    return z ^ (z >> 31);
+}
+
+static double rng_unit(dw_rng *r) { return (double)(rng_next(r) >> 11) * 0x1p-53; }
+static int rng_int(dw_rng *r, int n) { return (int)(rng_next(r) % (uint64_t)n); } /* [0, n) */
+static double rng_range(dw_rng *r, double lo, double hi) { return lo + (hi - lo) * rng_unit(r); }
+static double rng_log(dw_rng *r, double lo, double hi) { return lo * pow(hi / lo, rng_unit(r)); }
+
+/* ---- the simulators and what each call did ----------------------------------------------- */
+
+typedef struct dw_event {
+    cc_contact_event e;
+    rw_doubt doubt;
+    int n;           /* circles in the snapshot */
+    cc_vec2 pos[DW_MAX_CIRCLES]; /* every circle's position at the event, in id order */
+    cc_vec2 vel[DW_MAX_CIRCLES]; /* and velocity (before or after the impulse: the same in both) */
+} dw_event;
+
+typedef struct dw_sim {
+    const char *name;
+    cc_world *w;    /* a world, or NULL for the reference */
+    void *mem;
+    rw_world *r;
+    int n_events;   /* events of the current call (the first DW_LOG_MAX are kept) */
+    dw_event log[DW_LOG_MAX];
+} dw_sim;
+
+static int sim_get(const dw_sim *s, int *ids, cc_circle *c, int cap)
+{
+    return s->w != NULL ? cc_world_get_circles(s->w, ids, c, cap) : rw_get_circles(s->r, ids, c, cap);
+}
+
+static void snapshot(dw_sim *s, const cc_contact_event *e, const rw_doubt *d)
+{
+    cc_circle c[DW_MAX_CIRCLES];
+    dw_event *ev;
+    int i, n;
+    if (s->n_events++ >= DW_LOG_MAX)
+        return;
+    ev = &s->log[s->n_events - 1];
+    ev->e = *e;
+    ev->doubt.tie_gap = ev->doubt.graze_gap = ev->doubt.slow = ev->doubt.slack = HUGE_VAL;
+    if (d != NULL)
+        ev->doubt = *d;
+    n = sim_get(s, NULL, c, DW_MAX_CIRCLES);
+    ev->n = n < DW_MAX_CIRCLES ? n : DW_MAX_CIRCLES;
+    for (i = 0; i < ev->n; i++) {
+        ev->pos[i] = c[i].pos;
+        ev->vel[i] = c[i].vel;
+    }
+}
+
+static void on_world_contact(const cc_contact_event *e, void *user) { snapshot((dw_sim *)user, e, NULL); }
+static void on_reference_event(const cc_contact_event *e, const rw_doubt *d, void *user)
+{
+    snapshot((dw_sim *)user, e, d);
+}
+
+static int sim_make(dw_sim *s, const char *name, const cc_world_def *def, int reference)
+{
+    memset(s, 0, sizeof *s);
+    s->name = name;
+    if (reference) {
+        s->r = (rw_world *)malloc(sizeof *s->r);
+        return s->r != NULL && rw_init(s->r, def, on_reference_event, s) == CC_OK;
+    } else {
+        cc_world_def d = *def;
+        size_t n = cc_world_size(&d);
+        d.on_contact = on_world_contact;
+        d.user = s;
+        s->mem = malloc(n);
+        s->w = s->mem != NULL ? cc_world_init(s->mem, n, &d, NULL) : NULL;
+        return s->w != NULL;
+    }
+}
+
+static void sim_free(dw_sim *s)
+{
+    free(s->mem);
+    free(s->r);
+}
+
+/* ---- a scene ------------------------------------------------------------------------------ */
+
+typedef struct dw_scene {
+    dw_rng rng;
+    double box;          /* circles are placed in [-box, box]^2 */
+    double rmin, rmax;   /* radii of new circles */
+    double rcap;         /* after the first step: no circle wider than the grid's cells, which
+                            would defer the push-apart to the next step (see "Overlaps") */
+    double vmax;         /* largest speed */
+    double L, T, J;      /* scales: length, time, impulse */
+    cc_segment seg[8];
+    int n_seg;
+} dw_scene;
+
+/* Does c (placed among the circles of sim, ids ex1 and ex2 excluded) overlap a circle or a wall?
+ * How many circles it overlaps goes to *n_over (the last one to *which). */
+static int overlaps(const dw_scene *sc, const dw_sim *sim, const cc_circle *c, int ex1, int ex2, int *n_over,
+                    int *which)
+{
+    cc_circle all[DW_MAX_CIRCLES];
+    int ids[DW_MAX_CIRCLES], n = sim_get(sim, ids, all, DW_MAX_CIRCLES), i, walls = 0;
+    *n_over = 0;
+    for (i = 0; i < n; i++) {
+        double dx = all[i].pos.x - c->pos.x, dy = all[i].pos.y - c->pos.y, R = all[i].radius + c->radius;
+        if (ids[i] == ex1 || ids[i] == ex2)
+            continue;
+        /* a margin of 1% of R: "touching" is not what these scenes test */
+        if (dx * dx + dy * dy < R * R * 1.0201) {
+            ++*n_over;
+            *which = ids[i];
+        }
+    }
+    for (i = 0; i < sc->n_seg; i++) {
+        cc_vec2 q = cc_closest_point_on_segment(c->pos, &sc->seg[i]);
+        double dx = q.x - c->pos.x, dy = q.y - c->pos.y;
+        walls += dx * dx + dy * dy < c->radius * c->radius * 1.0201;
+    }
+    return *n_over > 0 || walls > 0;
+}
+
+/* A random circle; immovable ones now and then, some at rest, speeds spread 1:1e4. */
+static cc_circle random_circle(dw_scene *sc)
+{
+    cc_circle c;
+    double u = rng_unit(&sc->rng), speed, angle = rng_range(&sc->rng, 0.0, 6.283185307179586);
+    c.radius = rng_log(&sc->rng, sc->rmin, sc->rmax < sc->rcap ? sc->rmax : sc->rcap);
+    c.pos.x = rng_range(&sc->rng, -sc->box + c.radius, sc->box - c.radius);
+    c.pos.y = rng_range(&sc->rng, -sc->box + c.radius, sc->box - c.radius);
+    c.mass = rng_log(&sc->rng, 0.1, 10.0) * c.radius * c.radius;
+    speed = u < 0.15 ? 0.0 : rng_log(&sc->rng, sc->vmax * 1e-4, sc->vmax);
+    c.vel.x = speed * cos(angle);
+    c.vel.y = speed * sin(angle);
+    if (rng_unit(&sc->rng) < 0.08)
+        c.mass = HUGE_VAL; /* an obstacle, or (when moving) a kinematic body */
+    return c;
+}
+
+/* A circle placed where it overlaps nothing, or (when `onto`) exactly one circle and no wall:
+ * overlaps that the world pushes apart, isolated so that the order of the pushes is not in
+ * question. Returns 0 when no place was found. */
+static int place(dw_scene *sc, const dw_sim *sim, int self, int onto, cc_circle *out)
+{
+    int tries, n_over, which = -1;
+    for (tries = 0; tries < 200; tries++) {
+        cc_circle c = random_circle(sc);
+        if (onto) {
+            cc_circle all[DW_MAX_CIRCLES];
+            int ids[DW_MAX_CIRCLES], n = sim_get(sim, ids, all, DW_MAX_CIRCLES), k;
+            double a = rng_range(&sc->rng, 0.0, 6.283185307179586), d;
+            if (n == 0)
+                return 0;
+            k = rng_int(&sc->rng, n);
+            if (ids[k] == self || (isinf(all[k].mass) && isinf(c.mass)))
+                continue;
+            d = (all[k].radius + c.radius) * rng_range(&sc->rng, 0.5, 0.97);
+            c.pos.x = all[k].pos.x + d * cos(a);
+            c.pos.y = all[k].pos.y + d * sin(a);
+            /* onto circle k alone, and the push-apart must make no second overlap with a circle or
+             * a wall (the order of the pushes would then decide, and that is the world's to
+             * choose) */
+            if (!overlaps(sc, sim, &c, self, ids[k], &n_over, &which)) {
+                cc_circle pa = c, pb = all[k];
+                if (cc_separate(&pa, &pb) == CC_OVERLAP && !overlaps(sc, sim, &pa, self, ids[k], &n_over, &which) &&
+                    !overlaps(sc, sim, &pb, self, ids[k], &n_over, &which)) {
+                    *out = c;
+                    return 1;
+                }
+            }
+            continue;
+        }
+        if (!overlaps(sc, sim, &c, self, self, &n_over, &which)) {
+            *out = c;
+            return 1;
+        }
+    }
+    return 0;
+}
+
+/* ---- comparing two simulators' calls ------------------------------------------------------- */
+
+typedef struct dw_cmp {
+    const dw_scene *sc;
+    dw_result *res;
+    double apart; /* state difference / L at the last matched event */
+} dw_cmp;
+
+static void say(dw_result *res, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(res->why, sizeof res->why, fmt, ap);
+    va_end(ap);
+}
+
+/* The identity of an event, independent of which body the simulator named first. */
+static void identity(const cc_contact_event *e, int *lo, int *hi, int *seg)
+{
+    *seg = e->segment;
+    *lo = e->b < 0 || e->a < e->b ? e->a : e->b;
+    *hi = e->b < 0 ? -1 : (e->a < e->b ? e->b : e->a);
+}
+
+static int by_identity(const void *x, const void *y)
+{
+    const dw_event *a = *(const dw_event *const *)x, *b = *(const dw_event *const *)y;
+    int la, ha, sa, lb, hb, sb;
+    identity(&a->e, &la, &ha, &sa);
+    identity(&b->e, &lb, &hb, &sb);
+    if (la != lb)
+        return la < lb ? -1 : 1;
+    if (ha != hb)
+        return ha < hb ? -1 : 1;
+    return sa < sb ? -1 : sa > sb;
+}
+
+/* Doubts of the reference's events of this call up to time t: does rounding decide anything? */
+static int doubtful(const dw_cmp *c, const dw_sim *ref, double t)
+{
+    double scale = fabs(t) + c->sc->T;
+    int i, n = ref->n_events < DW_LOG_MAX ? ref->n_events : DW_LOG_MAX;
+    for (i = 0; i < n; i++) {
+        const rw_doubt *d = &ref->log[i].doubt;
+        if (d->tie_gap <= DW_TIE * scale || d->graze_gap <= DW_GRAZE || d->slow <= DW_SLOW || d->slack <= DW_SLACK)
+            return 1;
+        if (ref->log[i].e.t > t)
+            break;
+    }
+    return 0;
+}
+
+/* The largest difference between two snapshots (the same ids in both): positions / L and
+ * velocities / V. */
+static double apart(const dw_scene *sc, const dw_event *a, const dw_event *b)
+{
+    double mp = 0.0, mv = 0.0;
+    int i;
+    if (a->n != b->n)
+        return HUGE_VAL;
+    for (i = 0; i < a->n; i++) {
+        double p = fabs(a->pos[i].x - b->pos[i].x) + fabs(a->pos[i].y - b->pos[i].y);
+        double v = fabs(a->vel[i].x - b->vel[i].x) + fabs(a->vel[i].y - b->vel[i].y);
+        mp = p > mp ? p : mp;
+        mv = v > mv ? v : mv;
+    }
+    return mp / sc->L > mv / sc->vmax ? mp / sc->L : mv / sc->vmax;
+}
+
+/* Compares the events of one call. Returns DW_END_DONE to go on, or how the scene ends. */
+static dw_end compare_call(dw_cmp *c, const dw_sim *A, const dw_sim *B, const dw_sim *ref, const char *call)
+{
+    const dw_event *ra[DW_LOG_MAX], *rb[DW_LOG_MAX];
+    int na = A->n_events < DW_LOG_MAX ? A->n_events : DW_LOG_MAX;
+    int nb = B->n_events < DW_LOG_MAX ? B->n_events : DW_LOG_MAX;
+    int i = 0, j = 0, k;
+    while (i < na && j < nb) {
+        /* a run: the events one simulator reported at one instant (a cluster), any order */
+        int ia = i, jb = j, m;
+        double t = B->log[j].e.t;
+        while (i < na && A->log[i].e.t == A->log[ia].e.t)
+            ra[i - ia] = &A->log[i], i++;
+        while (j < nb && B->log[j].e.t == B->log[jb].e.t)
+            rb[j - jb] = &B->log[j], j++;
+        m = i - ia;
+        if (m != j - jb) {
+            if (c->apart > DW_APART || doubtful(c, ref, t))
+                return DW_END_TIE;
+            say(c->res, "%s: at t = %.17g %s reports %d contacts, %s %d", call, t, A->name, m, B->name, j - jb);
+            return DW_END_FAILED;
+        }
+        qsort(ra, (size_t)m, sizeof ra[0], by_identity);
+        qsort(rb, (size_t)m, sizeof rb[0], by_identity);
+        for (k = 0; k < m; k++) {
+            const cc_contact_event *ea = &ra[k]->e, *eb = &rb[k]->e;
+            int la, ha, sa, lb, hb, sb;
+            double flip = ea->a == eb->a ? 1.0 : -1.0, dt, dj, dn;
+            identity(ea, &la, &ha, &sa);
+            identity(eb, &lb, &hb, &sb);
+            if (la != lb || ha != hb || sa != sb) {
+                if (c->apart > DW_APART || doubtful(c, ref, t))
+                    return DW_END_TIE;
+                say(c->res, "%s: at t = %.17g %s reports contact (%d, %d, wall %d), %s (%d, %d, wall %d)", call, t,
+                    A->name, ea->a, ea->b, ea->segment, B->name, eb->a, eb->b, eb->segment);
+                return DW_END_FAILED;
+            }
+            dt = fabs(ea->t - eb->t) / (fabs(eb->t) + c->sc->T);
+            dj = fabs(ea->impulse - eb->impulse) / (fabs(eb->impulse) + 1e-9 * c->sc->J);
+            dn = fabs(ea->normal.x - flip * eb->normal.x) + fabs(ea->normal.y - flip * eb->normal.y);
+            if (dt > DW_T_TOL + DW_GROW * c->apart || dj > DW_J_TOL + DW_GROW * c->apart ||
+                dn > DW_J_TOL + DW_GROW * c->apart) {
+                if (c->apart > DW_APART || doubtful(c, ref, t))
+                    return DW_END_TIE;
+                say(c->res, "%s: contact (%d, %d, wall %d), event %d of %d: t %.17g against %.17g, impulse %.17g "
+                    "against %.17g, normals differ by %.3g; the states before were %.3g L apart", call, ea->a, ea->b,
+                    ea->segment, jb + k, nb, ea->t, eb->t, ea->impulse, eb->impulse, dn, c->apart);
+                return DW_END_FAILED;
+            }
+            if (c->apart < DW_FRESH && dt > c->res->worst_dt)
+                c->res->worst_dt = dt;
+            c->res->events_compared++;
+        }
+        c->apart = apart(c->sc, ra[m - 1], rb[m - 1]);
+        if (c->apart > DW_APART) {
+            say(c->res, "%s: after the contacts at t = %.17g the states are %.3g L apart (chaos)", call, t, c->apart);
+            return DW_END_DIVERGED;
+        }
+    }
+    if (na != nb && i == na && j == nb) {
+        /* unreachable: both lists were consumed run by run */
+    } else if (i < na || j < nb) {
+        const dw_event *extra = i < na ? &A->log[i] : &B->log[j];
+        if (A->n_events > DW_LOG_MAX || B->n_events > DW_LOG_MAX)
+            return DW_END_DONE; /* the rest is beyond what is compared */
+        if (c->apart > DW_APART || doubtful(c, ref, extra->e.t))
+            return DW_END_TIE;
+        say(c->res, "%s: %s alone reports contact (%d, %d, wall %d) at t = %.17g", call,
+            i < na ? A->name : B->name, extra->e.a, extra->e.b, extra->e.segment, extra->e.t);
+        return DW_END_FAILED;
+    }
+    return DW_END_DONE;
+}
+
+/* After a call: the same circles, at states apart by no more than rounding explains. */
+static dw_end compare_states(dw_cmp *c, const dw_sim *A, const dw_sim *B, const dw_sim *ref, const char *call)
+{
+    cc_circle ca[DW_MAX_CIRCLES], cb[DW_MAX_CIRCLES];
+    int ia[DW_MAX_CIRCLES], ib[DW_MAX_CIRCLES];
+    int na = sim_get(A, ia, ca, DW_MAX_CIRCLES), nb = sim_get(B, ib, cb, DW_MAX_CIRCLES), k;
+    double dp = 0.0, dv = 0.0;
+    int worst = 0;
+    if (na != nb || memcmp(ia, ib, sizeof ia[0] * (size_t)na) != 0) {
+        say(c->res, "%s: %s holds %d circles, %s %d (or other ids)", call, A->name, na, B->name, nb);
+        return DW_END_FAILED;
+    }
+    for (k = 0; k < na; k++) {
+        double p = fabs(ca[k].pos.x - cb[k].pos.x) + fabs(ca[k].pos.y - cb[k].pos.y);
+        double v = fabs(ca[k].vel.x - cb[k].vel.x) + fabs(ca[k].vel.y - cb[k].vel.y);
+        if (ca[k].radius != cb[k].radius || !(ca[k].mass == cb[k].mass)) {
+            say(c->res, "%s: circle %d changed radius or mass", call, ia[k]);
+            return DW_END_FAILED;
+        }
+        if (p > dp)
+            worst = k;
+        dp = p > dp ? p : dp;
+        dv = v > dv ? v : dv;
+    }
+    dp /= c->sc->L;
+    dv /= c->sc->vmax;
+    if (dp > DW_APART || dv > DW_APART) {
+        say(c->res, "%s: states apart by %.3g L in position, %.3g V in velocity, with every contact matched (circle "
+            "%d at (%.17g, %.17g) in %s, (%.17g, %.17g) in %s); before: %.3g L apart, doubt %d, %d events", call, dp,
+            dv, ia[worst], ca[worst].pos.x, ca[worst].pos.y, A->name, cb[worst].pos.x, cb[worst].pos.y, B->name,
+            c->apart, doubtful(c, ref, HUGE_VAL), A->n_events);
+        /* every contact matched, so the velocities can differ only by what the contacts made of
+         * the states' difference before them, and positions by that plus free flight since */
+        if (c->apart > DW_APART || A->n_events > DW_LOG_MAX || B->n_events > DW_LOG_MAX ||
+            (dv <= DW_GROW * (c->apart + DW_FRESH) && dp <= c->apart + dv + DW_FRESH))
+            return DW_END_DIVERGED;
+        say(c->res, "%s: states apart by %.3g L in position, %.3g V in velocity, with every contact matched (circle "
+            "%d at (%.17g, %.17g) in %s, (%.17g, %.17g) in %s)", call, dp, dv, ia[worst], ca[worst].pos.x,
+            ca[worst].pos.y, A->name, cb[worst].pos.x, cb[worst].pos.y, B->name);
+        return DW_END_FAILED;
+    }
+    if (dp > c->res->worst_dp)
+        c->res->worst_dp = dp;
+    c->apart = dp > dv ? dp : dv;
+    return DW_END_DONE;
+}
+
+/* ---- the scene played ----------------------------------------------------------------------- */
+
+/* The reference set to the world's state: the next call starts from the same numbers. */
+static void resync(dw_sim *ref, const dw_sim *from)
+{
+    cc_circle c[DW_MAX_CIRCLES];
+    int ids[DW_MAX_CIRCLES], n = sim_get(from, ids, c, DW_MAX_CIRCLES), k;
+    for (k = 0; k < n; k++)
+        ref->r->body[ids[k]].c = c[k];
+    ref->r->now = cc_world_time(from->w);
+}
+
+enum { CALL_ADD, CALL_REMOVE, CALL_SET, CALL_STEP };
+
+void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, dw_result *out)
+{
+    dw_scene sc;
+    dw_sim *sims = (dw_sim *)calloc(3, sizeof *sims);
+    dw_sim *A, *B, *ref;
+    dw_cmp cmp;
+    cc_world_def def;
+    int n_sims, n0, k, step, small;
+    memset(out, 0, sizeof *out);
+    memset(&sc, 0, sizeof sc);
+    sc.rng.s = seed * UINT64_C(0x2545F4914F6CDD1D) + 1u;
+    /* the scene's shape */
+    n0 = 2 + rng_int(&sc.rng, pairing == DW_SMALL_VS_GRID ? 20 : 63);
+    sc.rmin = 1.0;
+    sc.rmax = rng_log(&sc.rng, 1.0, 100.0);
+    sc.rcap = HUGE_VAL;
+    sc.vmax = rng_log(&sc.rng, 0.01, 100.0);
+    {   /* a box that holds the circles at an area fraction of 5% to 40% (E[r^2] of log-uniform radii) */
+        double r2 = sc.rmax > 1.0 + 1e-9 ? (sc.rmax * sc.rmax - 1.0) / (2.0 * log(sc.rmax)) : 1.0;
+        sc.box = sqrt(n0 * 3.14159 * r2 / rng_range(&sc.rng, 0.05, 0.4)) * 0.5 + sc.rmax;
+    }
+    sc.L = 2.0 * sc.box;
+    sc.T = sc.L / sc.vmax;
+    sc.J = 10.0 * sc.rmax * sc.rmax * sc.vmax;
+    cc_world_def_init(&def);
+    small = pairing == DW_SMALL_VS_GRID || rng_unit(&sc.rng) < 0.3;
+    def.max_circles = small ? 32 : 33 + rng_int(&sc.rng, DW_MAX_CIRCLES - 33);
+    def.max_segments = 8;
+    def.max_events = 3000; /* a jam (see DW_END_JAMMED) costs little */
+    def.restitution = rng_unit(&sc.rng) < 0.5 ? 1.0 : rng_range(&sc.rng, 0.3, 1.0);
+    def.rest_speed = rng_unit(&sc.rng) < 0.3 ? sc.vmax * 1e-3 : 0.0;
+    if (rng_unit(&sc.rng) < 0.5) { /* a box of walls */
+        double b = sc.box;
+        sc.seg[0] = (cc_segment){{-b, -b}, {b, -b}};
+        sc.seg[1] = (cc_segment){{b, -b}, {b, b}};
+        sc.seg[2] = (cc_segment){{b, b}, {-b, b}};
+        sc.seg[3] = (cc_segment){{-b, b}, {-b, -b}};
+        sc.n_seg = 4;
+    }
+    for (k = rng_int(&sc.rng, 5); k > 0; k--) { /* walls inside: short segments and points */
+        cc_segment s;
+        s.a.x = rng_range(&sc.rng, -sc.box, sc.box);
+        s.a.y = rng_range(&sc.rng, -sc.box, sc.box);
+        s.b = s.a;
+        if (rng_unit(&sc.rng) < 0.7) {
+            s.b.x += rng_range(&sc.rng, -0.3, 0.3) * sc.box;
+            s.b.y += rng_range(&sc.rng, -0.3, 0.3) * sc.box;
+        }
+        sc.seg[sc.n_seg++] = s;
+    }
+    /* the simulators: A against B; the reference always runs, for its doubts */
+    ref = &sims[1];
+    A = &sims[0];
+    B = ref;
+    n_sims = 2;
+    if (!sim_make(&sims[0], small ? "world (all pairs)" : "world (grid)", &def, 0) ||
+        !sim_make(ref, "reference", &def, 1)) {
+        say(out, "cannot make the simulators");
+        out->end = DW_END_FAILED;
+        goto done;
+    }
+    if (pairing == DW_SMALL_VS_GRID) {
+        cc_world_def g = def;
+        g.max_circles = 33 + rng_int(&sc.rng, 200);
+        if (!sim_make(&sims[2], "world (grid)", &g, 0)) {
+            say(out, "cannot make the gridded world");
+            out->end = DW_END_FAILED;
+            goto done;
+        }
+        B = &sims[2];
+        n_sims = 3;
+    }
+    cmp.sc = &sc;
+    cmp.res = out;
+    cmp.apart = 0.0;
+    /* walls, then the first circles (placed apart, a few onto another) */
+    for (k = 0; k < sc.n_seg; k++) {
+        int s;
+        for (s = 0; s < n_sims; s++) {
+            int r = sims[s].w != NULL ? cc_world_add_segment(sims[s].w, &sc.seg[k]) : rw_add_segment(sims[s].r, &sc.seg[k]);
+            if (r != k) {
+                say(out, "add_segment %d returned %d in %s", k, r, sims[s].name);
+                out->end = DW_END_FAILED;
+                goto done;
+            }
+        }
+    }
+    for (step = 0; out->end == DW_END_DONE && out->events_compared < max_events && step < 60; step++) {
+        if (step == 1) { /* the largest movable radius the first step filed */
+            cc_circle live[DW_MAX_CIRCLES];
+            int n = sim_get(ref, NULL, live, DW_MAX_CIRCLES), i;
+            sc.rcap = sc.rmin;
+            for (i = 0; i < n; i++)
+                if (!isinf(live[i].mass) && live[i].radius > sc.rcap)
+                    sc.rcap = live[i].radius;
+        }
+        int calls = step == 0 ? n0 : rng_int(&sc.rng, 4), q;
+        for (q = 0; q <= calls && out->end == DW_END_DONE; q++) {
+            int kind = q == calls ? CALL_STEP : step == 0 ? CALL_ADD : rng_int(&sc.rng, 3), s, id = -1;
+            int rc[3];
+            cc_circle c;
+            double dt = 0.0;
+            char what[96];
+            cc_circle live[DW_MAX_CIRCLES];
+            int ids[DW_MAX_CIRCLES], n_live = sim_get(ref, ids, live, DW_MAX_CIRCLES);
+            if (kind == CALL_ADD && (n_live >= def.max_circles || !place(&sc, ref, -1, step > 0 && rng_unit(&sc.rng) < 0.25, &c)))
+                continue;
+            if (kind == CALL_REMOVE || kind == CALL_SET) {
+                if (n_live == 0)
+                    continue;
+                id = ids[rng_int(&sc.rng, n_live)];
+                if (kind == CALL_SET && !place(&sc, ref, id, rng_unit(&sc.rng) < 0.25, &c))
+                    continue;
+            }
+            if (kind == CALL_STEP)
+                dt = sc.T * rng_log(&sc.rng, 1e-3, 0.5);
+            if (dw_trace && kind != CALL_STEP)
+                for (s = 0; s < n_live; s++)
+                    printf("  live %d: ((%.17g, %.17g), (%.17g, %.17g), r %.17g, m %.17g)\n", ids[s], live[s].pos.x,
+                           live[s].pos.y, live[s].vel.x, live[s].vel.y, live[s].radius, live[s].mass);
+            for (s = 0; s < n_sims; s++) {
+                dw_sim *m = &sims[s];
+                m->n_events = 0;
+                if (m->w != NULL)
+                    rc[s] = kind == CALL_ADD      ? cc_world_add_circle(m->w, &c)
+                            : kind == CALL_REMOVE ? cc_world_remove_circle(m->w, id)
+                            : kind == CALL_SET    ? cc_world_set_circle(m->w, id, &c)
+                                                  : cc_world_step(m->w, dt);
+                else
+                    rc[s] = kind == CALL_ADD      ? rw_add_circle(m->r, &c)
+                            : kind == CALL_REMOVE ? rw_remove_circle(m->r, id)
+                            : kind == CALL_SET    ? rw_set_circle(m->r, id, &c)
+                                                  : rw_step(m->r, dt);
+            }
+            out->calls++;
+            if (dw_trace)
+                printf("call %s id %d c = ((%.17g, %.17g), (%.17g, %.17g), r %.17g, m %.17g) dt %.17g -> %d; events %d/%d\n",
+                       kind == CALL_ADD ? "add" : kind == CALL_REMOVE ? "remove" : kind == CALL_SET ? "set" : "step", id,
+                       c.pos.x, c.pos.y, c.vel.x, c.vel.y, c.radius, c.mass, dt, rc[0], A->n_events, B->n_events);
+            snprintf(what, sizeof what, "scene %llu, step %d, %s", (unsigned long long)seed, step,
+                     kind == CALL_ADD ? "add" : kind == CALL_REMOVE ? "remove" : kind == CALL_SET ? "set" : "step");
+            if (kind == CALL_STEP && (rc[0] == CC_EVENT_LIMIT || rc[1] == CC_EVENT_LIMIT || (n_sims > 2 && rc[2] == CC_EVENT_LIMIT))) {
+                out->end = DW_END_JAMMED;
+                break;
+            }
+            for (s = 1; s < n_sims; s++)
+                if (rc[s] != rc[0]) {
+                    say(out, "%s: %s returned %d, %s %d", what, sims[0].name, rc[0], sims[s].name, rc[s]);
+                    out->end = DW_END_FAILED;
+                }
+            if (out->end != DW_END_DONE)
+                break;
+            out->end = compare_call(&cmp, A, B, ref, what);
+            if (dw_trace && out->end != DW_END_DONE) {
+                int e, z;
+                for (z = 0; z < 2; z++) {
+                    const dw_sim *m = z == 0 ? A : B;
+                    for (e = 0; e < m->n_events && e < DW_LOG_MAX; e++)
+                        printf("  %s event %d: (%d, %d, wall %d) t %.17g impulse %.17g n (%.17g, %.17g)\n", m->name, e,
+                               m->log[e].e.a, m->log[e].e.b, m->log[e].e.segment, m->log[e].e.t, m->log[e].e.impulse,
+                               m->log[e].e.normal.x, m->log[e].e.normal.y);
+                }
+            }
+            if (out->end == DW_END_DONE)
+                out->end = compare_states(&cmp, A, B, ref, what);
+            if (kind == CALL_STEP)
+                out->steps_compared++;
+            resync(ref, A);
+        }
+    }
+done:
+    for (k = 0; k < 3; k++)
+        sim_free(&sims[k]);
+    free(sims);
+}

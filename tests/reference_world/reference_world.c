@@ -1,0 +1,553 @@
+/* The reference world (see reference_world.h): EXACT's semantics, plainly. Each rule below
+ * names the paragraph of the header (include/circlecollide.h, "The world") that it follows. */
+#include "reference_world.h"
+
+#include "world/cluster.h"
+
+#include <math.h>
+#include <string.h>
+
+/* The world's own constants, restated (world_internal.h, simultaneous.c). */
+#define RW_APPROACH_ROUNDING 0x1p-40 /* "An approach slower than 2^-40 times the summed speeds" */
+#define RW_REST_FRACTION 0x1p-20     /* "or slower than rest_speed * 2^-20" */
+#define RW_CLU_TOL 0x1p-40           /* "Simultaneous": gap below 2^-40 of the numbers involved */
+#define RW_CLU_BODIES 24             /* "Up to 24 circles and 48 contacts per cluster" */
+#define RW_CLU_CONTACTS 48
+
+static cc_vec2 v2(double x, double y)
+{
+    cc_vec2 v;
+    v.x = x;
+    v.y = y;
+    return v;
+}
+
+static double inf_norm(cc_vec2 v) { return fabs(v.x) > fabs(v.y) ? fabs(v.x) : fabs(v.y); }
+static double l1(cc_vec2 v) { return fabs(v.x) + fabs(v.y); }
+static double dot(cc_vec2 a, cc_vec2 b) { return a.x * b.x + a.y * b.y; }
+static cc_vec2 sub(cc_vec2 a, cc_vec2 b) { return v2(a.x - b.x, a.y - b.y); }
+static int at_rest(const cc_circle *c) { return c->vel.x == 0.0 && c->vel.y == 0.0; }
+
+static int circle_ok(const cc_circle *c)
+{
+    return c != NULL && isfinite(c->pos.x) && isfinite(c->pos.y) && isfinite(c->vel.x) && isfinite(c->vel.y) &&
+           isfinite(c->radius) && c->radius > 0.0 && c->mass > 0.0 && !isnan(c->mass);
+}
+
+static int segment_ok(const cc_segment *s)
+{
+    return s != NULL && isfinite(s->a.x) && isfinite(s->a.y) && isfinite(s->b.x) && isfinite(s->b.y);
+}
+
+/* "Tolerance": a collision approaches faster than rounding and faster than a resting contact. */
+static double approach_threshold(const rw_world *w, double speeds)
+{
+    double a = RW_APPROACH_ROUNDING * speeds, b = w->rest_speed * RW_REST_FRACTION;
+    return a > b ? a : b;
+}
+
+static int approaching(const rw_world *w, double vn, double speeds)
+{
+    return vn > RW_APPROACH_ROUNDING * speeds && vn > w->rest_speed * RW_REST_FRACTION;
+}
+
+/* Unit vector from a to b, (1, 0) for coincident centres (the world's rule). */
+static cc_vec2 centre_normal(cc_vec2 a, cc_vec2 b)
+{
+    double dx = b.x - a.x, dy = b.y - a.y, d = sqrt(dx * dx + dy * dy);
+    return d > 0.0 ? v2(dx / d, dy / d) : v2(1.0, 0.0);
+}
+
+/* A circle's contact with a wall now: normal from the centre to the closest point, or the
+ * wall's own normal when the centre lies on it. */
+static cc_contact wall_contact(const cc_circle *c, const cc_segment *s)
+{
+    cc_contact k;
+    cc_vec2 q = cc_closest_point_on_segment(c->pos, s), d = sub(q, c->pos);
+    double dist = sqrt(d.x * d.x + d.y * d.y);
+    k.t = 0.0;
+    if (dist > 0.0) {
+        k.normal = v2(d.x / dist, d.y / dist);
+    } else {
+        cc_vec2 n = v2(s->a.y - s->b.y, s->b.x - s->a.x);
+        double l = sqrt(n.x * n.x + n.y * n.y);
+        k.normal = l > 0.0 ? v2(n.x / l, n.y / l) : v2(1.0, 0.0);
+    }
+    k.depth = c->radius - dist;
+    k.point = q;
+    return k;
+}
+
+static void report(rw_world *w, int a, int b, int seg, cc_vec2 point, cc_vec2 normal, double impulse)
+{
+    cc_contact_event e;
+    e.a = a;
+    e.b = b;
+    e.segment = seg;
+    e.t = w->now;
+    e.point = point;
+    e.normal = normal;
+    e.impulse = impulse;
+    w->events++;
+    if (w->on_event != NULL)
+        w->on_event(&e, &w->doubt, w->user);
+}
+
+/* "Collapse": approaches slower than rest_speed get restitution 0. */
+static double restitution_for(const rw_world *w, double approach)
+{
+    return approach < w->rest_speed ? 0.0 : w->restitution;
+}
+
+static double speed_change(cc_vec2 a, cc_vec2 b)
+{
+    cc_vec2 d = sub(a, b);
+    return sqrt(d.x * d.x + d.y * d.y);
+}
+
+/* One contact by itself, with the public pair functions (b < 0: wall seg). */
+static int resolve_pair(rw_world *w, int a, int b, int seg)
+{
+    cc_circle *ca = &w->body[a].c;
+    cc_circle na = *ca;
+    cc_contact k;
+    if (b >= 0) {
+        cc_circle *cb = &w->body[b].c, nb = *cb;
+        cc_vec2 d = sub(cb->pos, ca->pos);
+        k.t = 0.0;
+        k.normal = centre_normal(ca->pos, cb->pos);
+        k.depth = ca->radius + cb->radius - sqrt(d.x * d.x + d.y * d.y);
+        k.point = v2(ca->pos.x + k.normal.x * (ca->radius - 0.5 * k.depth),
+                     ca->pos.y + k.normal.y * (ca->radius - 0.5 * k.depth));
+        if (cc_respond(&na, &nb, &k, restitution_for(w, -dot(sub(cb->vel, ca->vel), k.normal))) != CC_HIT)
+            return 0;
+        report(w, a, b, -1, k.point, k.normal,
+               isinf(ca->mass) ? cb->mass * speed_change(nb.vel, cb->vel) : ca->mass * speed_change(na.vel, ca->vel));
+        ca->vel = na.vel;
+        cb->vel = nb.vel;
+        return 1;
+    }
+    k = wall_contact(ca, &w->seg[seg]);
+    if (isinf(ca->mass) || cc_respond_segment(&na, &k, restitution_for(w, dot(ca->vel, k.normal))) != CC_HIT)
+        return 0;
+    report(w, a, -1, seg, k.point, k.normal, ca->mass * speed_change(na.vel, ca->vel));
+    ca->vel = na.vel;
+    return 1;
+}
+
+/* ---- "Simultaneous": the cluster of an impact, gathered plainly ---------------------------- */
+
+typedef struct rw_clu {
+    int nb, nc;
+    int id[RW_CLU_BODIES];
+    cc__cluster_body body[RW_CLU_BODIES];
+    cc__cluster_contact contact[RW_CLU_CONTACTS];
+    int seg[RW_CLU_CONTACTS];
+} rw_clu;
+
+static int clu_body(const rw_world *w, rw_clu *c, int k)
+{
+    int i;
+    for (i = 0; i < c->nb; i++)
+        if (c->id[i] == k)
+            return i;
+    if (c->nb == RW_CLU_BODIES || c->nb == w->max_circles)
+        return -1;
+    c->id[c->nb] = k;
+    c->body[c->nb].vel = w->body[k].c.vel;
+    c->body[c->nb].inv_mass = isinf(w->body[k].c.mass) ? 0.0 : 1.0 / w->body[k].c.mass;
+    return c->nb++;
+}
+
+static void clu_contact(const rw_world *w, rw_clu *c, int a, int b, int seg, cc_vec2 n)
+{
+    int i, cap = 2 * (w->max_circles < RW_CLU_BODIES ? w->max_circles : RW_CLU_BODIES) + 8;
+    for (i = 0; i < c->nc; i++) {
+        const cc__cluster_contact *q = &c->contact[i];
+        if (c->seg[i] == seg && ((q->a == a && q->b == b) || (seg < 0 && q->a == b && q->b == a)))
+            return;
+    }
+    if (c->nc == (cap < RW_CLU_CONTACTS ? cap : RW_CLU_CONTACTS))
+        return;
+    c->contact[c->nc].a = a;
+    c->contact[c->nc].b = b;
+    c->contact[c->nc].normal = n;
+    c->contact[c->nc].impulse = 0.0;
+    c->seg[c->nc++] = seg;
+}
+
+/* Body k touches a partner of radius r at p moving at v when their gap is within this. */
+static double clu_tol(const rw_world *w, const cc_circle *k, double r, cc_vec2 p, cc_vec2 v)
+{
+    return RW_CLU_TOL *
+           (inf_norm(k->pos) + inf_norm(p) + k->radius + r + (inf_norm(k->vel) + inf_norm(v)) * fabs(w->now));
+}
+
+static void clu_gather(const rw_world *w, rw_clu *c)
+{
+    int from, j, s;
+    for (from = 0; from < c->nb; from++) {
+        const cc_circle *k = &w->body[c->id[from]].c;
+        if (isinf(k->mass))
+            continue; /* immovable circles take impulses but pass none on */
+        for (j = 0; j < w->id_end; j++) {
+            const cc_circle *q = &w->body[j].c;
+            cc_vec2 d;
+            int i;
+            if (!w->body[j].alive || j == c->id[from] || (isinf(k->mass) && isinf(q->mass)))
+                continue;
+            d = sub(q->pos, k->pos);
+            if (sqrt(d.x * d.x + d.y * d.y) - (k->radius + q->radius) > clu_tol(w, k, q->radius, q->pos, q->vel))
+                continue;
+            if ((i = clu_body(w, c, j)) >= 0)
+                clu_contact(w, c, from, i, -1, centre_normal(k->pos, q->pos));
+        }
+        for (s = 0; s < w->n_segments; s++) {
+            cc_contact kk = wall_contact(k, &w->seg[s]);
+            if (-kk.depth <= clu_tol(w, k, 0.0, kk.point, v2(0.0, 0.0)))
+                clu_contact(w, c, from, -1, s, kk.normal);
+        }
+    }
+}
+
+static int still_approaching(const rw_world *w, int a, int b, int seg)
+{
+    const cc_circle *ca = &w->body[a].c;
+    if (b >= 0) {
+        const cc_circle *cb = &w->body[b].c;
+        return approaching(w, dot(sub(ca->vel, cb->vel), centre_normal(ca->pos, cb->pos)), l1(ca->vel) + l1(cb->vel));
+    }
+    return approaching(w, dot(ca->vel, wall_contact(ca, &w->seg[seg]).normal), l1(ca->vel));
+}
+
+/* The impact (a, b or wall seg) due now, with everything touching it. */
+static int resolve_cluster(rw_world *w, int a, int b, int seg)
+{
+    static unsigned char scratch[4 * RW_CLU_CONTACTS * RW_CLU_CONTACTS + 64 * RW_CLU_CONTACTS + 4096];
+    rw_clu c;
+    int i, ia, ib, hits = 0;
+    c.nb = c.nc = 0;
+    ia = clu_body(w, &c, a);
+    if (b < 0)
+        clu_contact(w, &c, ia, -1, seg, wall_contact(&w->body[a].c, &w->seg[seg]).normal);
+    else if ((ib = clu_body(w, &c, b)) >= 0)
+        clu_contact(w, &c, ia, ib, -1, centre_normal(w->body[a].c.pos, w->body[b].c.pos));
+    clu_gather(w, &c);
+    for (i = 0; i < c.nc; i++) { /* how close each contact is to neither approaching nor parting */
+        const cc__cluster_contact *k = &c.contact[i];
+        cc_vec2 va = c.body[k->a].vel, vb = k->b >= 0 ? c.body[k->b].vel : v2(0.0, 0.0);
+        double speeds = l1(va) + l1(vb), vn = fabs(dot(sub(va, vb), k->normal));
+        if (speeds > 0.0 && vn / speeds < w->doubt.slack)
+            w->doubt.slack = vn / speeds;
+    }
+    if (c.nc <= 1)
+        return resolve_pair(w, a, b, seg); /* nothing else touches: a pair impact */
+    if (cc__cluster_scratch_size(c.nb, c.nc) > sizeof scratch ||
+        cc__cluster_resolve(c.body, c.nb, c.contact, c.nc, w->restitution, w->rest_speed, scratch, sizeof scratch,
+                            NULL) != CC_OK)
+        return -1000; /* cannot happen for a valid cluster: the comparison will show it */
+    for (i = 0; i < c.nb; i++)
+        w->body[c.id[i]].c.vel = c.body[i].vel;
+    for (i = 0; i < c.nc; i++) {
+        const cc__cluster_contact *k = &c.contact[i];
+        const cc_circle *ka = &w->body[c.id[k->a]].c;
+        cc_vec2 point;
+        if (!(k->impulse > 0.0))
+            continue;
+        if (k->b >= 0) {
+            const cc_circle *kb = &w->body[c.id[k->b]].c;
+            cc_vec2 d = sub(kb->pos, ka->pos);
+            double depth = ka->radius + kb->radius - sqrt(d.x * d.x + d.y * d.y);
+            point = v2(ka->pos.x + k->normal.x * (ka->radius - 0.5 * depth),
+                       ka->pos.y + k->normal.y * (ka->radius - 0.5 * depth));
+        } else {
+            point = wall_contact(ka, &w->seg[c.seg[i]]).point;
+        }
+        report(w, c.id[k->a], k->b >= 0 ? c.id[k->b] : -1, c.seg[i], point, k->normal, k->impulse);
+        hits++;
+    }
+    /* an impact the cluster model left approaching by the pair's own measure: the pair impulse */
+    if (still_approaching(w, a, b, seg))
+        hits += resolve_pair(w, a, b, seg);
+    return hits;
+}
+
+/* "Overlaps": resolved with the pair's impulse by itself while the world is being rebuilt (the
+ * first step, after a wall), with its cluster otherwise. */
+static void resolve(rw_world *w, int a, int b, int seg)
+{
+    if (w->dirty)
+        (void)resolve_pair(w, a, b, seg);
+    else
+        (void)resolve_cluster(w, a, b, seg);
+}
+
+/* Pushes a out of b (or wall seg) when they overlap, then resolves the contact. */
+static void unoverlap(rw_world *w, int a, int b, int seg)
+{
+    cc_circle *ca = &w->body[a].c;
+    if (b >= 0) {
+        cc_circle *cb = &w->body[b].c;
+        if (isinf(ca->mass) && isinf(cb->mass))
+            return;
+        if (cc_detect_static(ca, cb, NULL) != CC_OVERLAP || cc_separate(ca, cb) != CC_OVERLAP)
+            return;
+    } else {
+        cc_contact k;
+        if (isinf(ca->mass))
+            return;
+        k = wall_contact(ca, &w->seg[seg]);
+        if (!(k.depth > 0.0))
+            return;
+        ca->pos.x -= k.normal.x * k.depth;
+        ca->pos.y -= k.normal.y * k.depth;
+    }
+    w->doubt.tie_gap = w->doubt.graze_gap = w->doubt.slow = w->doubt.slack = HUGE_VAL;
+    resolve(w, a, b, seg);
+}
+
+/* A circle added or set on top of others: pushed out of each, then out of the walls. */
+static void settle(rw_world *w, int id)
+{
+    int j, s;
+    for (j = 0; j < w->id_end; j++)
+        if (j != id && w->body[j].alive)
+            unoverlap(w, id, j, -1);
+    for (s = 0; s < w->n_segments; s++)
+        unoverlap(w, id, -1, s);
+}
+
+int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, void *user)
+{
+    if (w == NULL || def == NULL || def->mode != CC_MODE_EXACT || def->max_circles < 0 ||
+        def->max_circles > RW_MAX_CIRCLES || def->max_segments < 0 || def->max_segments > RW_MAX_SEGMENTS ||
+        !(def->restitution >= 0.0 && def->restitution <= 1.0) || !(def->rest_speed >= 0.0))
+        return CC_ERR_INVALID;
+    memset(w, 0, sizeof *w);
+    w->restitution = def->restitution;
+    w->rest_speed = def->rest_speed;
+    w->max_events = def->max_events;
+    w->max_circles = def->max_circles;
+    w->max_segments = def->max_segments;
+    w->dirty = 1; /* "Before the first step ... this happens for all circles at the next step" */
+    w->on_event = on_event;
+    w->user = user;
+    return CC_OK;
+}
+
+int rw_add_circle(rw_world *w, const cc_circle *c)
+{
+    int id;
+    if (w->busy || !circle_ok(c))
+        return CC_ERR_INVALID;
+    if (w->id_end - w->free_top >= w->max_circles)
+        return CC_ERR_FULL;
+    id = w->free_top > 0 ? w->free_ids[--w->free_top] : w->id_end++; /* "Ids": last removed first */
+    w->body[id].c = *c;
+    w->body[id].alive = 1;
+    if (!w->dirty) {
+        w->busy = 1;
+        settle(w, id);
+        w->busy = 0;
+    }
+    return id;
+}
+
+int rw_remove_circle(rw_world *w, int id)
+{
+    if (w->busy)
+        return CC_ERR_INVALID;
+    if (id < 0 || id >= w->id_end || !w->body[id].alive)
+        return CC_ERR_NOT_FOUND;
+    w->body[id].alive = 0;
+    w->free_ids[w->free_top++] = id;
+    return CC_OK;
+}
+
+int rw_set_circle(rw_world *w, int id, const cc_circle *c)
+{
+    if (w->busy || !circle_ok(c))
+        return CC_ERR_INVALID;
+    if (id < 0 || id >= w->id_end || !w->body[id].alive)
+        return CC_ERR_NOT_FOUND;
+    w->body[id].c = *c;
+    if (!w->dirty) {
+        w->busy = 1;
+        settle(w, id);
+        w->busy = 0;
+    }
+    return CC_OK;
+}
+
+int rw_add_segment(rw_world *w, const cc_segment *s)
+{
+    if (w->busy || !segment_ok(s))
+        return CC_ERR_INVALID;
+    if (w->n_segments >= w->max_segments)
+        return CC_ERR_FULL;
+    w->seg[w->n_segments] = *s;
+    w->dirty = 1; /* "after a wall ... was added, this happens for all circles at the next step" */
+    return w->n_segments++;
+}
+
+int rw_get_circles(const rw_world *w, int *ids, cc_circle *out, int capacity)
+{
+    int i, k = 0;
+    if (capacity < 0)
+        return CC_ERR_INVALID;
+    for (i = 0; i < w->id_end; i++) {
+        if (!w->body[i].alive)
+            continue;
+        if (k < capacity) {
+            if (ids != NULL)
+                ids[k] = i;
+            if (out != NULL)
+                out[k] = w->body[i].c;
+        }
+        k++;
+    }
+    return k;
+}
+
+/* ---- stepping ---------------------------------------------------------------------------- */
+
+typedef struct rw_cand {
+    double t; /* absolute */
+    int a, b, seg;
+} rw_cand;
+
+static void advance_all(rw_world *w, double t)
+{
+    int i;
+    for (i = 0; i < w->id_end; i++)
+        if (w->body[i].alive && t != w->now) {
+            cc_circle *c = &w->body[i].c;
+            c->pos.x += c->vel.x * (t - w->now);
+            c->pos.y += c->vel.y * (t - w->now);
+        }
+    w->now = t;
+}
+
+/* Offers a candidate event; keeps the earliest and the next distinct time behind it. */
+static void offer(rw_cand *best, double *second, double t, int a, int b, int seg)
+{
+    if (t < best->t) {
+        *second = best->t;
+        best->t = t;
+        best->a = a;
+        best->b = b;
+        best->seg = seg;
+    } else if (t < *second) {
+        *second = t;
+    }
+}
+
+/* Every pair swept from now: the earliest event up to t_end, with its doubts. */
+static rw_cand next_event(rw_world *w, double t_end)
+{
+    rw_cand best;
+    double second = HUGE_VAL, graze = HUGE_VAL, slow = HUGE_VAL, h = t_end - w->now;
+    int i, j, s;
+    best.t = HUGE_VAL;
+    best.a = best.b = best.seg = -1;
+    for (i = 0; i < w->id_end; i++) {
+        const cc_circle *ci = &w->body[i].c;
+        if (!w->body[i].alive)
+            continue;
+        for (j = i + 1; j < w->id_end; j++) {
+            const cc_circle *cj = &w->body[j].c;
+            cc_contact k;
+            cc_vec2 dp, dv;
+            double vv, vn, speeds;
+            int r;
+            if (!w->body[j].alive || (isinf(ci->mass) && isinf(cj->mass)) || (at_rest(ci) && at_rest(cj)))
+                continue;
+            dp = sub(cj->pos, ci->pos);
+            dv = sub(cj->vel, ci->vel);
+            vv = dot(dv, dv);
+            /* how close the pair passes, relative to the radius sum: near 0, hit and miss are
+             * decided by rounding */
+            if (dot(dp, dv) < 0.0 && vv > 0.0) {
+                double tca = -dot(dp, dv) / vv, R = ci->radius + cj->radius;
+                double miss = fabs(fabs(dp.x * dv.y - dp.y * dv.x) / sqrt(vv) - R) / R;
+                if (tca <= h && miss < graze)
+                    graze = miss;
+            }
+            if (!(dot(dp, dv) < 0.0) && dot(dp, dp) > 4.0 * (ci->radius + cj->radius) * (ci->radius + cj->radius))
+                continue; /* far apart and not closing: cc_sweep would say so, at more cost */
+            r = cc_sweep(ci, cj, h, &k);
+            if (r != CC_HIT && r != CC_OVERLAP)
+                continue;
+            vn = -dot(dv, k.normal);
+            speeds = l1(ci->vel) + l1(cj->vel);
+            if (vn > 0.0 && fabs(vn / approach_threshold(w, speeds) - 1.0) < slow)
+                slow = fabs(vn / approach_threshold(w, speeds) - 1.0);
+            if (approaching(w, vn, speeds))
+                offer(&best, &second, w->now + k.t, i, j, -1);
+        }
+        if (isinf(ci->mass) || at_rest(ci))
+            continue; /* "Immovable": kinematic circles pass through walls */
+        for (s = 0; s < w->n_segments; s++) {
+            const cc_segment *g = &w->seg[s];
+            cc_contact k;
+            double vn, thr, ex = ci->pos.x + ci->vel.x * h, ey = ci->pos.y + ci->vel.y * h, m = 2.0 * ci->radius;
+            int r;
+            /* the path's box, grown by twice the radius, misses the wall's: cc_sweep_segment would
+             * say so, at more cost */
+            if (fmax(g->a.x, g->b.x) < fmin(ci->pos.x, ex) - m || fmin(g->a.x, g->b.x) > fmax(ci->pos.x, ex) + m ||
+                fmax(g->a.y, g->b.y) < fmin(ci->pos.y, ey) - m || fmin(g->a.y, g->b.y) > fmax(ci->pos.y, ey) + m)
+                continue;
+            r = cc_sweep_segment(ci, g, h, &k);
+            if (r != CC_HIT && r != CC_OVERLAP)
+                continue;
+            vn = dot(ci->vel, k.normal);
+            thr = approach_threshold(w, l1(ci->vel));
+            if (vn > 0.0 && fabs(vn / thr - 1.0) < slow)
+                slow = fabs(vn / thr - 1.0);
+            if (approaching(w, vn, l1(ci->vel)))
+                offer(&best, &second, w->now + k.t, i, -1, s);
+        }
+    }
+    w->doubt.tie_gap = second - best.t;
+    w->doubt.graze_gap = graze;
+    w->doubt.slow = slow;
+    w->doubt.slack = HUGE_VAL; /* resolve_cluster's */
+    return best;
+}
+
+int rw_step(rw_world *w, double dt)
+{
+    double t_end;
+    uint64_t done;
+    int i, j, s;
+    if (w->busy || !(dt >= 0.0) || !isfinite(dt) || !isfinite(w->now + dt))
+        return CC_ERR_INVALID;
+    t_end = w->now + dt;
+    w->busy = 1;
+    if (w->dirty) { /* one pass over every overlap, each pair by itself */
+        for (i = 0; i < w->id_end; i++) {
+            if (!w->body[i].alive)
+                continue;
+            for (j = i + 1; j < w->id_end; j++)
+                if (w->body[j].alive)
+                    unoverlap(w, i, j, -1);
+            for (s = 0; s < w->n_segments; s++)
+                unoverlap(w, i, -1, s);
+        }
+        w->dirty = 0;
+    }
+    for (done = 0;; done++) {
+        rw_cand e = next_event(w, t_end);
+        if (!(e.t <= t_end))
+            break;
+        if (done == w->max_events) { /* "Collapse": the step stops at the cap */
+            w->busy = 0;
+            return CC_EVENT_LIMIT;
+        }
+        advance_all(w, e.t > w->now ? e.t : w->now);
+        (void)resolve_cluster(w, e.a, e.b, e.seg);
+    }
+    advance_all(w, t_end);
+    w->busy = 0;
+    return CC_OK;
+}

@@ -1,0 +1,67 @@
+/* The reference world: EXACT mode's semantics written as plainly as possible, for the
+ * differential tests (tests only, never in the library). No grid, no queue, no caches, no lazy
+ * states: every body is kept at the current time, and after every event every pair and every
+ * circle-wall pair is swept again with the library's public pair functions (cc_sweep,
+ * cc_sweep_segment, cc_respond, cc_respond_segment, cc_separate) and the earliest event is
+ * taken: O(N^2) per event, for N <= 64 or so. Simultaneous impacts are gathered by a plain
+ * implementation of the world's rule (everything within the touching tolerance, transitively
+ * through movable circles) and resolved by the library's cluster model (cluster.h), so that a
+ * comparison with the world isolates its machinery: which events happen, in which order, at
+ * which times.
+ *
+ * The API mirrors cc_world_*: the same ids (removed ids reused last-in first-out), the same
+ * codes, the same callback. What the reference cannot know exactly is recorded instead: at each
+ * event, whether another event came within a near tie, or a pair passed within a graze of
+ * contact, so that a comparison can tell a legitimate reordering by rounding from a bug. */
+#ifndef CC_REFERENCE_WORLD_H
+#define CC_REFERENCE_WORLD_H
+
+#include "circlecollide.h"
+
+#include <stdint.h>
+
+#define RW_MAX_CIRCLES 256
+#define RW_MAX_SEGMENTS 64
+
+typedef struct rw_body {
+    cc_circle c; /* state at the world's current time */
+    int alive;
+} rw_body;
+
+/* Why an event's place in the order is not certain: set by rw_step for each event. */
+typedef struct rw_doubt {
+    double tie_gap;   /* relative gap to the next distinct candidate event (>= 0, +INF when none) */
+    double graze_gap; /* smallest relative |closest approach - R| of a pair that misses or hits
+                         before the next event (+INF when none) */
+    double slow;      /* smallest |ratio - 1| of an approach speed to its rounding threshold (+INF) */
+    double slack;     /* smallest |normal speed| / summed speeds of a contact in the event's cluster:
+                         near 0, whether it takes an impulse is rounding's (+INF) */
+} rw_doubt;
+
+typedef void (*rw_event_fn)(const cc_contact_event *e, const rw_doubt *doubt, void *user);
+
+typedef struct rw_world {
+    double restitution, rest_speed, now;
+    uint64_t max_events; /* impacts per step (the world counts every event: its cap comes later) */
+    int max_circles, max_segments;
+    int n_segments, id_end, free_top, dirty, busy;
+    rw_body body[RW_MAX_CIRCLES];
+    int free_ids[RW_MAX_CIRCLES];
+    cc_segment seg[RW_MAX_SEGMENTS];
+    rw_event_fn on_event;
+    void *user;
+    rw_doubt doubt; /* of the event being resolved */
+    unsigned long events;
+} rw_world;
+
+/* def as for cc_world_init (mode must be EXACT; the callback fields are ignored: events go to
+ * on_event). Returns CC_OK or CC_ERR_INVALID. */
+int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, void *user);
+int rw_add_circle(rw_world *w, const cc_circle *c);
+int rw_remove_circle(rw_world *w, int id);
+int rw_set_circle(rw_world *w, int id, const cc_circle *c);
+int rw_add_segment(rw_world *w, const cc_segment *s);
+int rw_step(rw_world *w, double dt);
+int rw_get_circles(const rw_world *w, int *ids, cc_circle *out, int capacity);
+
+#endif
