@@ -50,7 +50,6 @@ static double rng_log(dw_rng *r, double lo, double hi) { return lo * pow(hi / lo
 
 typedef struct dw_event {
     cc_contact_event e;
-    rw_doubt doubt;
     int n;           /* circles in the snapshot */
     cc_vec2 pos[DW_MAX_CIRCLES]; /* every circle's position at the event, in id order */
     cc_vec2 vel[DW_MAX_CIRCLES]; /* and velocity (before or after the impulse: the same in both) */
@@ -70,7 +69,7 @@ static int sim_get(const dw_sim *s, int *ids, cc_circle *c, int cap)
     return s->w != NULL ? cc_world_get_circles(s->w, ids, c, cap) : rw_get_circles(s->r, ids, c, cap);
 }
 
-static void snapshot(dw_sim *s, const cc_contact_event *e, const rw_doubt *d)
+static void snapshot(dw_sim *s, const cc_contact_event *e)
 {
     cc_circle c[DW_MAX_CIRCLES];
     dw_event *ev;
@@ -79,9 +78,6 @@ static void snapshot(dw_sim *s, const cc_contact_event *e, const rw_doubt *d)
         return;
     ev = &s->log[s->n_events - 1];
     ev->e = *e;
-    ev->doubt.tie_gap = ev->doubt.graze_gap = ev->doubt.slow = ev->doubt.slack = HUGE_VAL;
-    if (d != NULL)
-        ev->doubt = *d;
     n = sim_get(s, NULL, c, DW_MAX_CIRCLES);
     ev->n = n < DW_MAX_CIRCLES ? n : DW_MAX_CIRCLES;
     for (i = 0; i < ev->n; i++) {
@@ -90,11 +86,7 @@ static void snapshot(dw_sim *s, const cc_contact_event *e, const rw_doubt *d)
     }
 }
 
-static void on_world_contact(const cc_contact_event *e, void *user) { snapshot((dw_sim *)user, e, NULL); }
-static void on_reference_event(const cc_contact_event *e, const rw_doubt *d, void *user)
-{
-    snapshot((dw_sim *)user, e, d);
-}
+static void on_contact(const cc_contact_event *e, void *user) { snapshot((dw_sim *)user, e); }
 
 static int sim_make(dw_sim *s, const char *name, const cc_world_def *def, int reference)
 {
@@ -102,11 +94,11 @@ static int sim_make(dw_sim *s, const char *name, const cc_world_def *def, int re
     s->name = name;
     if (reference) {
         s->r = (rw_world *)malloc(sizeof *s->r);
-        return s->r != NULL && rw_init(s->r, def, on_reference_event, s) == CC_OK;
+        return s->r != NULL && rw_init(s->r, def, on_contact, s) == CC_OK;
     } else {
         cc_world_def d = *def;
         size_t n = cc_world_size(&d);
-        d.on_contact = on_world_contact;
+        d.on_contact = on_contact;
         d.user = s;
         s->mem = malloc(n);
         s->w = s->mem != NULL ? cc_world_init(s->mem, n, &d, NULL) : NULL;
@@ -255,19 +247,11 @@ static int by_identity(const void *x, const void *y)
     return sa < sb ? -1 : sa > sb;
 }
 
-/* Doubts of the reference's events of this call up to time t: does rounding decide anything? */
-static int doubtful(const dw_cmp *c, const dw_sim *ref, double t)
+/* Does rounding decide anything in this call (the reference's doubts)? */
+static int doubtful(const dw_sim *ref)
 {
-    double scale = fabs(t) + c->sc->T;
-    int i, n = ref->n_events < DW_LOG_MAX ? ref->n_events : DW_LOG_MAX;
-    for (i = 0; i < n; i++) {
-        const rw_doubt *d = &ref->log[i].doubt;
-        if (d->tie_gap <= DW_TIE * scale || d->graze_gap <= DW_GRAZE || d->slow <= DW_SLOW || d->slack <= DW_SLACK)
-            return 1;
-        if (ref->log[i].e.t > t)
-            break;
-    }
-    return 0;
+    const rw_doubt *d = &ref->r->doubt;
+    return d->tie_gap <= DW_TIE || d->graze_gap <= DW_GRAZE || d->slow <= DW_SLOW || d->slack <= DW_SLACK;
 }
 
 /* The largest difference between two snapshots (the same ids in both): positions / L and
@@ -304,7 +288,7 @@ static dw_end compare_call(dw_cmp *c, const dw_sim *A, const dw_sim *B, const dw
             rb[j - jb] = &B->log[j], j++;
         m = i - ia;
         if (m != j - jb) {
-            if (c->apart > DW_APART || doubtful(c, ref, t))
+            if (c->apart > DW_APART || doubtful(ref))
                 return DW_END_TIE;
             say(c->res, "%s: at t = %.17g %s reports %d contacts, %s %d", call, t, A->name, m, B->name, j - jb);
             return DW_END_FAILED;
@@ -318,7 +302,7 @@ static dw_end compare_call(dw_cmp *c, const dw_sim *A, const dw_sim *B, const dw
             identity(ea, &la, &ha, &sa);
             identity(eb, &lb, &hb, &sb);
             if (la != lb || ha != hb || sa != sb) {
-                if (c->apart > DW_APART || doubtful(c, ref, t))
+                if (c->apart > DW_APART || doubtful(ref))
                     return DW_END_TIE;
                 say(c->res, "%s: at t = %.17g %s reports contact (%d, %d, wall %d), %s (%d, %d, wall %d)", call, t,
                     A->name, ea->a, ea->b, ea->segment, B->name, eb->a, eb->b, eb->segment);
@@ -329,7 +313,7 @@ static dw_end compare_call(dw_cmp *c, const dw_sim *A, const dw_sim *B, const dw
             dn = fabs(ea->normal.x - flip * eb->normal.x) + fabs(ea->normal.y - flip * eb->normal.y);
             if (dt > DW_T_TOL + DW_GROW * c->apart || dj > DW_J_TOL + DW_GROW * c->apart ||
                 dn > DW_J_TOL + DW_GROW * c->apart) {
-                if (c->apart > DW_APART || doubtful(c, ref, t))
+                if (c->apart > DW_APART || doubtful(ref))
                     return DW_END_TIE;
                 say(c->res, "%s: contact (%d, %d, wall %d), event %d of %d: t %.17g against %.17g, impulse %.17g "
                     "against %.17g, normals differ by %.3g; the states before were %.3g L apart", call, ea->a, ea->b,
@@ -352,7 +336,7 @@ static dw_end compare_call(dw_cmp *c, const dw_sim *A, const dw_sim *B, const dw
         const dw_event *extra = i < na ? &A->log[i] : &B->log[j];
         if (A->n_events > DW_LOG_MAX || B->n_events > DW_LOG_MAX)
             return DW_END_DONE; /* the rest is beyond what is compared */
-        if (c->apart > DW_APART || doubtful(c, ref, extra->e.t))
+        if (c->apart > DW_APART || doubtful(ref))
             return DW_END_TIE;
         say(c->res, "%s: %s alone reports contact (%d, %d, wall %d) at t = %.17g", call,
             i < na ? A->name : B->name, extra->e.a, extra->e.b, extra->e.segment, extra->e.t);
@@ -391,7 +375,7 @@ static dw_end compare_states(dw_cmp *c, const dw_sim *A, const dw_sim *B, const 
         say(c->res, "%s: states apart by %.3g L in position, %.3g V in velocity, with every contact matched (circle "
             "%d at (%.17g, %.17g) in %s, (%.17g, %.17g) in %s); before: %.3g L apart, doubt %d, %d events", call, dp,
             dv, ia[worst], ca[worst].pos.x, ca[worst].pos.y, A->name, cb[worst].pos.x, cb[worst].pos.y, B->name,
-            c->apart, doubtful(c, ref, HUGE_VAL), A->n_events);
+            c->apart, doubtful(ref), A->n_events);
         /* every contact matched, so the velocities can differ only by what the contacts made of
          * the states' difference before them, and positions by that plus free flight since */
         if (c->apart > DW_APART || A->n_events > DW_LOG_MAX || B->n_events > DW_LOG_MAX ||
@@ -483,6 +467,7 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
         out->end = DW_END_FAILED;
         goto done;
     }
+    ref->r->time_scale = sc.T;
     if (pairing == DW_SMALL_VS_GRID) {
         cc_world_def g = def;
         g.max_circles = 33 + rng_int(&sc.rng, 200);

@@ -90,7 +90,13 @@ static void report(rw_world *w, int a, int b, int seg, cc_vec2 point, cc_vec2 no
     e.impulse = impulse;
     w->events++;
     if (w->on_event != NULL)
-        w->on_event(&e, &w->doubt, w->user);
+        w->on_event(&e, w->user);
+}
+
+/* A public call begins: nothing is in doubt yet. */
+static void new_call(rw_world *w)
+{
+    w->doubt.tie_gap = w->doubt.graze_gap = w->doubt.slow = w->doubt.slack = HUGE_VAL;
 }
 
 /* "Collapse": approaches slower than rest_speed get restitution 0. */
@@ -302,7 +308,6 @@ static void unoverlap(rw_world *w, int a, int b, int seg)
         ca->pos.x -= k.normal.x * k.depth;
         ca->pos.y -= k.normal.y * k.depth;
     }
-    w->doubt.tie_gap = w->doubt.graze_gap = w->doubt.slow = w->doubt.slack = HUGE_VAL;
     resolve(w, a, b, seg);
 }
 
@@ -338,6 +343,7 @@ int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, void *us
 int rw_add_circle(rw_world *w, const cc_circle *c)
 {
     int id;
+    new_call(w);
     if (w->busy || !circle_ok(c))
         return CC_ERR_INVALID;
     if (w->id_end - w->free_top >= w->max_circles)
@@ -355,6 +361,7 @@ int rw_add_circle(rw_world *w, const cc_circle *c)
 
 int rw_remove_circle(rw_world *w, int id)
 {
+    new_call(w);
     if (w->busy)
         return CC_ERR_INVALID;
     if (id < 0 || id >= w->id_end || !w->body[id].alive)
@@ -366,6 +373,7 @@ int rw_remove_circle(rw_world *w, int id)
 
 int rw_set_circle(rw_world *w, int id, const cc_circle *c)
 {
+    new_call(w);
     if (w->busy || !circle_ok(c))
         return CC_ERR_INVALID;
     if (id < 0 || id >= w->id_end || !w->body[id].alive)
@@ -446,7 +454,7 @@ static void offer(rw_cand *best, double *second, double t, int a, int b, int seg
 static rw_cand next_event(rw_world *w, double t_end)
 {
     rw_cand best;
-    double second = HUGE_VAL, graze = HUGE_VAL, slow = HUGE_VAL, h = t_end - w->now;
+    double second = HUGE_VAL, h = t_end - w->now;
     int i, j, s;
     best.t = HUGE_VAL;
     best.a = best.b = best.seg = -1;
@@ -470,8 +478,8 @@ static rw_cand next_event(rw_world *w, double t_end)
             if (dot(dp, dv) < 0.0 && vv > 0.0) {
                 double tca = -dot(dp, dv) / vv, R = ci->radius + cj->radius;
                 double miss = fabs(fabs(dp.x * dv.y - dp.y * dv.x) / sqrt(vv) - R) / R;
-                if (tca <= h && miss < graze)
-                    graze = miss;
+                if (tca <= h && miss < w->doubt.graze_gap)
+                    w->doubt.graze_gap = miss;
             }
             if (!(dot(dp, dv) < 0.0) && dot(dp, dp) > 4.0 * (ci->radius + cj->radius) * (ci->radius + cj->radius))
                 continue; /* far apart and not closing: cc_sweep would say so, at more cost */
@@ -480,8 +488,8 @@ static rw_cand next_event(rw_world *w, double t_end)
                 continue;
             vn = -dot(dv, k.normal);
             speeds = l1(ci->vel) + l1(cj->vel);
-            if (vn > 0.0 && fabs(vn / approach_threshold(w, speeds) - 1.0) < slow)
-                slow = fabs(vn / approach_threshold(w, speeds) - 1.0);
+            if (vn > 0.0 && fabs(vn / approach_threshold(w, speeds) - 1.0) < w->doubt.slow)
+                w->doubt.slow = fabs(vn / approach_threshold(w, speeds) - 1.0);
             if (approaching(w, vn, speeds))
                 offer(&best, &second, w->now + k.t, i, j, -1);
         }
@@ -498,20 +506,27 @@ static rw_cand next_event(rw_world *w, double t_end)
                 fmax(g->a.y, g->b.y) < fmin(ci->pos.y, ey) - m || fmin(g->a.y, g->b.y) > fmax(ci->pos.y, ey) + m)
                 continue;
             r = cc_sweep_segment(ci, g, h, &k);
+            {   /* the wall passed within 1e-6 of the radius: hit or miss is rounding's */
+                cc_circle in = *ci, out = *ci;
+                cc_contact kk;
+                in.radius *= 1.0 - 1e-6;
+                out.radius *= 1.0 + 1e-6;
+                int ri = cc_sweep_segment(&in, g, h, &kk), ro = cc_sweep_segment(&out, g, h, &kk);
+                if ((ri == CC_HIT && ro == CC_MISS) || (ri == CC_MISS && ro == CC_HIT))
+                    w->doubt.graze_gap = 0.0;
+            }
             if (r != CC_HIT && r != CC_OVERLAP)
                 continue;
             vn = dot(ci->vel, k.normal);
             thr = approach_threshold(w, l1(ci->vel));
-            if (vn > 0.0 && fabs(vn / thr - 1.0) < slow)
-                slow = fabs(vn / thr - 1.0);
+            if (vn > 0.0 && fabs(vn / thr - 1.0) < w->doubt.slow)
+                w->doubt.slow = fabs(vn / thr - 1.0);
             if (approaching(w, vn, l1(ci->vel)))
                 offer(&best, &second, w->now + k.t, i, -1, s);
         }
     }
-    w->doubt.tie_gap = second - best.t;
-    w->doubt.graze_gap = graze;
-    w->doubt.slow = slow;
-    w->doubt.slack = HUGE_VAL; /* resolve_cluster's */
+    if (second < HUGE_VAL && (second - best.t) / (fabs(best.t) + w->time_scale) < w->doubt.tie_gap)
+        w->doubt.tie_gap = (second - best.t) / (fabs(best.t) + w->time_scale);
     return best;
 }
 
@@ -520,6 +535,7 @@ int rw_step(rw_world *w, double dt)
     double t_end;
     uint64_t done;
     int i, j, s;
+    new_call(w);
     if (w->busy || !(dt >= 0.0) || !isfinite(dt) || !isfinite(w->now + dt))
         return CC_ERR_INVALID;
     t_end = w->now + dt;

@@ -28,17 +28,19 @@ typedef struct rw_body {
     int alive;
 } rw_body;
 
-/* Why an event's place in the order is not certain: set by rw_step for each event. */
+/* What rounding decides in a call (add, set, remove, step): the smallest of each, over every
+ * search for the next event and every cluster resolved in it. Reset at the start of each call. */
 typedef struct rw_doubt {
-    double tie_gap;   /* relative gap to the next distinct candidate event (>= 0, +INF when none) */
-    double graze_gap; /* smallest relative |closest approach - R| of a pair that misses or hits
-                         before the next event (+INF when none) */
-    double slow;      /* smallest |ratio - 1| of an approach speed to its rounding threshold (+INF) */
-    double slack;     /* smallest |normal speed| / summed speeds of a contact in the event's cluster:
-                         near 0, whether it takes an impulse is rounding's (+INF) */
+    double tie_gap;   /* gap between the earliest candidate event and the next distinct one,
+                         relative to |t| + time_scale (+INF when none) */
+    double graze_gap; /* relative |closest approach - R| of a circle pair that passes within the
+                         call; a wall passed within 1e-6 of the radius counts as 0 (+INF) */
+    double slow;      /* |ratio - 1| of an approach speed to its rounding threshold (+INF) */
+    double slack;     /* |normal speed| / summed speeds of a contact in a cluster: near 0,
+                         whether it takes an impulse is rounding's (+INF) */
 } rw_doubt;
 
-typedef void (*rw_event_fn)(const cc_contact_event *e, const rw_doubt *doubt, void *user);
+typedef void (*rw_event_fn)(const cc_contact_event *e, void *user);
 
 typedef struct rw_world {
     double restitution, rest_speed, now;
@@ -50,7 +52,8 @@ typedef struct rw_world {
     cc_segment seg[RW_MAX_SEGMENTS];
     rw_event_fn on_event;
     void *user;
-    rw_doubt doubt; /* of the event being resolved */
+    double time_scale; /* the scene's time scale, for relative tie gaps (set by the caller) */
+    rw_doubt doubt;    /* of the current (or last) call */
     unsigned long events;
 } rw_world;
 
