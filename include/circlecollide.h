@@ -65,7 +65,7 @@ extern "C" {
 /* ---- Version ------------------------------------------------------------------------------ */
 
 #define CC_VERSION_MAJOR 1 /* bumped only on an ABI break: also the SONAME */
-#define CC_VERSION_MINOR 0 /* bumped when symbols or struct fields are added */
+#define CC_VERSION_MINOR 1 /* bumped when symbols or struct fields are added */
 #define CC_VERSION_PATCH 0
 #define CC_VERSION ((CC_VERSION_MAJOR << 16) | (CC_VERSION_MINOR << 8) | CC_VERSION_PATCH)
 
@@ -186,8 +186,9 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * Memory    Everything lives inside [memory, memory + bytes): the world stores no address, not
  *           even into its own block, so a world may be copied (memcpy) to other 8-byte aligned
  *           memory of the same size and used from there. It keeps no pointer to the caller's
- *           defs, circles or segments (it copies them). About 160 bytes per circle (one 64-byte
- *           line of hot state, the predicted event, queue and grid entries) plus 32 per wall;
+ *           defs, circles or segments (it copies them). About 200 bytes per circle (one 64-byte
+ *           line of hot state, the predicted event, queue and grid entries, and 40 bytes of
+ *           properties that only a world using them reads) plus 48 per wall;
  *           EXACT adds one block of at most 15 KB for simultaneous impacts (see below).
  * Ids       cc_world_add_circle returns the most recently removed id when there is one (removed
  *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid
@@ -301,6 +302,25 @@ typedef struct cc_contact_event {
  * pocketed ball after the step). */
 typedef void (*cc_contact_fn)(const cc_contact_event *event, void *user);
 
+/* Passed to the sensor callback when a circle begins or stops overlapping a sensor circle (see
+ * "Per-body properties" below). */
+typedef struct cc_sensor_event {
+    int sensor;  /* the sensor circle's id */
+    int visitor; /* the other circle's id */
+    int begin;   /* 1: they began to overlap at t; 0: they stopped overlapping */
+    double t;    /* world time */
+} cc_sensor_event;
+
+/* Called like cc_contact_fn (from the same calls, with the same rules: it may read the world but
+ * not change it), for every sensor event, in time order with the impacts. */
+typedef void (*cc_sensor_fn)(const cc_sensor_event *event, void *user);
+
+/* How the restitution of a contact is made from its two sides' (cc_world_def.restitution_mix). */
+#define CC_MIX_MIN 0     /* the smaller of the two (the default) */
+#define CC_MIX_MAX 1     /* the larger */
+#define CC_MIX_PRODUCT 2 /* their product */
+#define CC_MIX_MEAN 3    /* their mean */
+
 /* Fill with cc_world_def_init, then change what you need. struct_size comes first so that a
  * library newer than the caller's header uses defaults for the fields the caller lacks; every
  * def must reach at least up to and including restitution. Capacities are at most 2^26 (and
@@ -316,7 +336,12 @@ typedef struct cc_world_def {
     double cell_size;         /* >= 0: smallest grid cell size; 0 = derived from the radii (default 0) */
     uint64_t max_events;      /* >= 1: cap on events per cc_world_step (default 10000000) */
     cc_contact_fn on_contact; /* called for every impulse, or NULL (default NULL) */
-    void *user;               /* passed to on_contact */
+    void *user;               /* passed to on_contact and on_sensor */
+    /* ---- 1.1 (a def of 1.0's size gets these defaults) ---- */
+    double rolling_decel;     /* >= 0: deceleration of every movable circle rolling on the
+                                 ground, length / time^2 (default 0: no friction) */
+    int restitution_mix;      /* a CC_MIX_*: a contact's restitution from its sides' (default MIN) */
+    cc_sensor_fn on_sensor;   /* called for every sensor event, or NULL (default NULL) */
 } cc_world_def;
 
 /* Defaults for every field; sets struct_size = sizeof(cc_world_def). Does nothing for NULL. */
@@ -391,6 +416,68 @@ typedef struct cc_world_stats {
  * left as the caller set it). CC_OK, CC_ERR_INVALID (NULL) or CC_ERR_VERSION (struct_size
  * smaller than the first two fields). */
 CC_API int cc_world_get_stats(const cc_world *w, cc_world_stats *out);
+
+/* ---- Per-body properties: restitution, filters, sensors (1.1) ------------------------------- */
+/* Every circle and wall carries properties. A new circle gets def.restitution,
+ * def.rolling_decel, category 1, mask 0xFFFFFFFF and is not a sensor; a new wall gets
+ * def.restitution, category 1 and mask 0xFFFFFFFF. A world whose circles and walls keep these
+ * runs exactly as it would without them (the same events, bit for bit, at the same cost).
+ *
+ * Restitution  A contact's restitution is def.restitution_mix of the two sides' (a circle's and
+ *           a wall's for a wall contact); approaches slower than def.rest_speed still get 0. A
+ *           simultaneous impact (see "Simultaneous") uses the smallest restitution of the
+ *           contacts in its cluster: a cue ball into a rack of one material behaves as before,
+ *           a ball into a corner of two cushions of 0.75 and 0.6 gets 0.6 at both, and kinetic
+ *           energy never grows (docs/SIMULTANEOUS.md).
+ * Filters   Two circles interact only when (a.category & b.mask) != 0 and (b.category & a.mask)
+ *           != 0; a circle and a wall likewise. Pairs that do not interact pass through each
+ *           other: no impulse, no callback, no push-apart, no sensor event.
+ * Sensors   A sensor circle moves like any other (usually it is immovable: a pocket, a goal, a
+ *           trigger zone) but takes and gives no impulses and touches no wall. With every
+ *           non-sensor circle its filter admits it reports begin when their distance becomes less
+ *           than the sum of the radii and end when it is no longer less, through def.on_sensor:
+ *           in EXACT at the exact times, in time order with the impacts; in SWEPT and DISCRETE
+ *           at the end of the step. Sensors do not sense sensors. A pocket that swallows a ball
+ *           whose centre enters it is a sensor of radius (pocket radius - ball radius). A world
+ *           holds at most CC_MAX_SENSORS sensors at once. A circle added, set or given
+ *           properties where it overlaps a sensor (or stops overlapping one) gets its begin (or
+ *           end) at once, from inside that call; a circle removed gets none: its overlaps are
+ *           forgotten.
+ * Callbacks cc_world_set_circle_props may fire on_contact (a filter change that makes an
+ *           overlapping pair interact pushes it apart, as set does) and on_sensor. */
+#define CC_MAX_SENSORS 64
+
+typedef struct cc_circle_props {
+    size_t struct_size;   /* sizeof(cc_circle_props) as the caller compiled it */
+    double restitution;   /* [0, 1] */
+    double rolling_decel; /* >= 0 and finite; ignored for an immovable circle */
+    uint32_t category;    /* the bits this circle is */
+    uint32_t mask;        /* the bits it interacts with */
+    int sensor;           /* nonzero: a sensor (reads back as 1) */
+} cc_circle_props;
+
+typedef struct cc_segment_props {
+    size_t struct_size; /* sizeof(cc_segment_props) as the caller compiled it */
+    double restitution; /* [0, 1] */
+    uint32_t category;
+    uint32_t mask;
+} cc_segment_props;
+
+/* The properties of circle id: fills the whole fields that fit in out->struct_size (struct_size
+ * itself is left as the caller set it). CC_OK, CC_ERR_NOT_FOUND, CC_ERR_INVALID (NULL) or
+ * CC_ERR_VERSION (struct_size smaller than its first two fields). */
+CC_API int cc_world_get_circle_props(const cc_world *w, int id, cc_circle_props *out);
+
+/* Sets the properties of circle id from the whole fields of p that fit in p->struct_size (the
+ * others keep their current value), at the current world time. CC_OK; CC_ERR_INVALID (NULL, a
+ * value out of range, or called from a callback) or CC_ERR_VERSION (struct_size too small), and
+ * nothing changed; CC_ERR_NOT_FOUND; CC_ERR_FULL when it would make a sensor of the world's
+ * CC_MAX_SENSORS + 1st. */
+CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props *p);
+
+/* The same for wall id. */
+CC_API int cc_world_get_segment_props(const cc_world *w, int id, cc_segment_props *out);
+CC_API int cc_world_set_segment_props(cc_world *w, int id, const cc_segment_props *p);
 
 /* ---- Single precision: the same contract in float ------------------------------------------ */
 /* Field for field the double types with float, and each function the double one's twin (same

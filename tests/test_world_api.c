@@ -37,8 +37,9 @@ static void test_size_follows_capacity(void)
     d.max_segments = 10;
     s1000w = cc_world_size(&d);
     TEST_ASSERT_TRUE(s1000 > s64);
-    /* ten walls of 4 doubles each: 320 bytes, rounded up to 16 */
-    TEST_ASSERT_EQUAL_UINT64(s1000 + 320, s1000w);
+    /* ten walls of 4 doubles each (320 bytes) and their properties (restitution, category and
+     * mask: 16 bytes each, 160), each array rounded up to 16 */
+    TEST_ASSERT_EQUAL_UINT64(s1000 + 320 + 160, s1000w);
     /* per circle: below 256 bytes (the body is one 64-byte line, plus event, cell, heap, hash) */
     TEST_ASSERT_TRUE(s1000 / 1000 < 256);
 }

@@ -8,5 +8,6 @@ int cc__step_discrete(cc_world *w, double dt)
 {
     w->now += dt; /* the bodies' lazy states carry them there as the rebuild advances them */
     cc__rebuild(w);
+    cc__sensor_pass(w);
     return CC_OK;
 }

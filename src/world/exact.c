@@ -114,7 +114,7 @@ int cc__step_exact(cc_world *w, double t_end)
             cc__grid_move(w, i, dir);
             w->stats.cell_crossings++;
             cc__predict_crossed(w, i, dir);
-        } else if (e->kind == CC__EV_CIRCLE) {
+        } else if (e->kind == CC__EV_CIRCLE || e->kind == CC__EV_SENSOR) {
             j = e->partner;
             if (!(CC__CARR(w, cc__cold, off_cold)[j].flags & CC__ALIVE) || B[j].count != e->pcount) {
                 w->stats.stale_events++;
@@ -122,6 +122,11 @@ int cc__step_exact(cc_world *w, double t_end)
                 continue;
             }
             cc__advance_body(&B[j], w->now);
+            if (e->kind == CC__EV_SENSOR) { /* no trajectory changes: the body looks ahead again */
+                cc__sensor_event(w, i, j);
+                cc__predict(w, i);
+                continue;
+            }
             tc.a = i;
             tc.b = j;
             tc.segment = -1;

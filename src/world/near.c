@@ -9,6 +9,12 @@
 #include "helpers.inc"
 #include "precision_end.h"
 
+/* Circles k and j interact (filters and sensors: only a world with them asks). */
+static int cc__near_interacts(const cc_world *w, int k, int j)
+{
+    return !(w->features & (CC__F_FILTER | CC__F_SENSOR)) || cc__circles_interact(w, k, j);
+}
+
 /* Circle j within tol of the circle of radius kr at (kx, ky) at w->now. */
 static int cc__touching_circle(const cc_world *w, const cc__body *bj, double kx, double ky, double kr, double tol)
 {
@@ -27,7 +33,8 @@ int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit vis
     int j, s, n = 0;
     if (w->mode != CC_MODE_EXACT || w->dirty || !w->use_grid || (C[k].flags & CC__LARGE)) {
         for (j = 0; j < w->id_end; j++)
-            if (j != k && (C[j].flags & CC__ALIVE) && cc__touching_circle(w, &B[j], kx, ky, kr, tol)) {
+            if (j != k && (C[j].flags & CC__ALIVE) && cc__touching_circle(w, &B[j], kx, ky, kr, tol) &&
+                cc__near_interacts(w, k, j)) {
                 visit(ctx, j, -1);
                 n++;
             }
@@ -46,14 +53,15 @@ int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit vis
                 if (x != x0)
                     t = ((uint32_t)x & mx) ? (t + 1u) & mask : cc__grid_slot(w, x, y);
                 for (j = slot[t]; j >= 0; j = B[j].next)
-                    if (B[j].cx == x && B[j].cy == y && j != k && cc__touching_circle(w, &B[j], kx, ky, kr, tol)) {
+                    if (B[j].cx == x && B[j].cy == y && j != k && cc__touching_circle(w, &B[j], kx, ky, kr, tol) &&
+                        cc__near_interacts(w, k, j)) {
                         visit(ctx, j, -1);
                         n++;
                     }
             }
         }
         for (j = w->large_head; j >= 0; j = B[j].next)
-            if (j != k && cc__touching_circle(w, &B[j], kx, ky, kr, tol)) {
+            if (j != k && cc__touching_circle(w, &B[j], kx, ky, kr, tol) && cc__near_interacts(w, k, j)) {
                 visit(ctx, j, -1);
                 n++;
             }
@@ -64,6 +72,8 @@ int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit vis
         /* most walls are far: the segment's box grown by the reach rules them out cheaply */
         if (kx + reach < (g->a.x < g->b.x ? g->a.x : g->b.x) || kx - reach > (g->a.x > g->b.x ? g->a.x : g->b.x) ||
             ky + reach < (g->a.y < g->b.y ? g->a.y : g->b.y) || ky - reach > (g->a.y > g->b.y ? g->a.y : g->b.y))
+            continue;
+        if ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__wall_interacts(w, k, s))
             continue;
         q = cc_closest_point_on_segment(p, g);
         if (cc__length(cc__sub(q, p)) <= reach) {

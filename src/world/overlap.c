@@ -195,6 +195,10 @@ void cc__rebuild(cc_world *w)
                 (void)cc__world_unoverlap(w, i, j, -1);
     while (cc__world_take_touched(w) >= 0)
         ; /* everything is predicted below */
+    if (w->mode == CC_MODE_EXACT && (w->features & CC__F_SENSOR))
+        for (i = 0; i < w->id_end; i++) /* each sensor's overlaps, before anything predicts them */
+            if ((C[i].flags & CC__ALIVE) && CC__CARR(w, cc__props, off_props)[i].sensor >= 0)
+                cc__sensor_refresh(w, i);
     if (w->mode == CC_MODE_EXACT) {
         cc__refile_moved(w, -1);
         if (w->use_grid) {
@@ -211,20 +215,43 @@ void cc__rebuild(cc_world *w)
     w->dirty = 0;
 }
 
-void cc__settle_body(cc_world *w, int id)
+/* After body id was filed and pushed out of what it overlaps: the neighbours pushed away or
+ * struck are refiled and predicted again, with whatever moves near them (one of them may now
+ * rest in someone's path), then body id itself. */
+static void cc__settle_after(cc_world *w, int id)
 {
     int j;
-    cc__grid_insert(w, id);
-    cc__unoverlap_body(w, id, 0);
-    /* the neighbours pushed away or struck: refiled and predicted again, with whatever moves
-     * near them (one of them may now rest in someone's path) */
     while ((j = cc__world_take_touched(w)) >= 0)
         if (j != id) {
             cc__refile_moved(w, j);
+            cc__sensor_refresh(w, j);
             cc__predict(w, j);
             cc__predict_neighbours(w, j);
         }
     cc__refile_moved(w, id);
+    cc__sensor_refresh(w, id); /* before the predictions, which start from its overlaps */
     cc__predict(w, id);
     cc__predict_neighbours(w, id);
+}
+
+void cc__settle_body(cc_world *w, int id)
+{
+    cc__grid_insert(w, id);
+    cc__unoverlap_body(w, id, 0);
+    cc__settle_after(w, id);
+}
+
+void cc__settle_props(cc_world *w, int id)
+{
+    if (w->mode != CC_MODE_EXACT) {
+        cc__sensor_refresh(w, id);
+        return; /* the other modes look at everything again at each step */
+    }
+    if (w->dirty)
+        return; /* the next step's rebuild does it all */
+    /* where it is: others' predictions with it go stale, pairs that now interact are pushed
+     * apart, and everything about it is predicted again */
+    CC__ARR(w, cc__body, off_body)[id].count++;
+    cc__unoverlap_body(w, id, 0);
+    cc__settle_after(w, id);
 }

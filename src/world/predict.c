@@ -52,15 +52,53 @@ typedef struct cc__alone {
     double reach;
 } cc__alone;
 
+/* The sensor pair i-j's next begin or end, kept when it comes first (out of line: sensor worlds
+ * only). */
+CC__NOINLINE void cc__try_sensor(const cc_world *w, int i, int j, cc__cand *best, uint64_t *tests)
+{
+    double t;
+    ++*tests;
+    t = cc__sensor_next(w, i, j);
+    if (!(t < best->t))
+        return;
+    best->t = t;
+    best->kind = CC__EV_SENSOR;
+    best->partner = j;
+    best->pcount = CC__CARR(w, cc__body, off_body)[j].count;
+}
+
+/* What a world with filters or sensors decides before the geometry of pair i-j (feat): 1 when
+ * the pair is done with (filtered out, two sensors, or a sensor pair handled here). */
+CC__INLINE_ALWAYS int cc__featured_pair(const cc_world *w, const cc__body *bj, int i, int j, cc__cand *best,
+                                        uint64_t *tests)
+{
+    const cc__props *P = CC__CARR(w, cc__props, off_props);
+    if (!cc__filter_pass(&P[i], &P[j]))
+        return 1;
+    if (P[i].sensor < 0 && P[j].sensor < 0)
+        return 0;
+    /* a sensor pair: the visitor holds its events while it moves, the sensor while it rests */
+    if (P[i].sensor >= 0 && P[j].sensor >= 0)
+        return 1;
+    if (P[i].sensor >= 0 && (bj->vx != 0.0 || bj->vy != 0.0))
+        return 1;
+    cc__try_sensor(w, i, j, best, tests);
+    return 1;
+}
+
 /* Contact of moving body i (at now) with circle j: a hit approaching faster than rounding, or
  * an overlap left by rounding whose bodies approach (a contact now). Inline: the scans call it
- * for every neighbour, and most are rejected by the first test. */
-CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, const cc__body *bi, int i_fixed, int j,
-                                        double now, cc__cand *best, uint64_t *tests, int check, cc__alone *al)
+ * for every neighbour, and most are rejected by the first test. feat: the world has filters or
+ * sensors (a constant, so that a world without them compiles the pair test of 1.0). */
+CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, const cc__body *bi, int i, int i_fixed,
+                                        int j, double now, cc__cand *best, uint64_t *tests, int check, cc__alone *al,
+                                        int feat)
 {
     const cc__body *bj = &B[j];
     double dt = now - bj->t, R, dv2, cr;
     cc_vec2 dp, dv;
+    if (feat && cc__featured_pair(w, bj, i, j, best, tests))
+        return;
     if (i_fixed && isinf(CC__CARR(w, cc__cold, off_cold)[j].m))
         return; /* two immovable circles pass through each other */
     dp.x = (bj->px + bj->vx * dt) - bi->px;
@@ -85,7 +123,7 @@ CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, co
 }
 
 /* Walls within reach before min(best, t_cross). */
-static void cc__try_segments(cc_world *w, const cc__body *bi, double t_cross, cc__cand *best)
+static void cc__try_segments(cc_world *w, int i, const cc__body *bi, double t_cross, cc__cand *best)
 {
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
     double now = w->now, h = (best->t < t_cross ? best->t : t_cross) - now;
@@ -111,6 +149,8 @@ static void cc__try_segments(cc_world *w, const cc__body *bi, double t_cross, cc
         int r;
         if ((q->a.x < x0 && q->b.x < x0) || (q->a.x > x1 && q->b.x > x1) || (q->a.y < y0 && q->b.y < y0) ||
             (q->a.y > y1 && q->b.y > y1))
+            continue;
+        if ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__wall_interacts(w, i, s))
             continue;
         w->stats.pairs_tested++;
         r = cc_sweep_segment(&c, q, best->t - now, &k);
@@ -161,7 +201,7 @@ static double cc__cross_time(const cc_world *w, const cc__body *b, int32_t *dir)
  * the scans are the hot path. */
 CC__INLINE_ALWAYS void cc__scan_block_x(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0,
                                         int32_t y0, int nx, int ny, cc__cand *best, uint64_t *tests, int check,
-                                        cc__alone *al)
+                                        cc__alone *al, int feat)
 {
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
     const uint32_t mx = (1u << w->tile_bits_x) - 1u, my = (1u << w->tile_bits_y) - 1u, mask = w->slot_mask;
@@ -178,7 +218,7 @@ CC__INLINE_ALWAYS void cc__scan_block_x(const cc_world *w, const cc__body *B, in
                 s = ((uint32_t)x & mx) ? (s + 1u) & mask : cc__grid_slot(w, x, y);
             for (j = slot[s]; j >= 0; j = B[j].next)
                 if (B[j].cx == x && B[j].cy == y && j != i)
-                    cc__try_circle_x(w, B, &B[i], i_fixed, j, now, best, tests, check, al);
+                    cc__try_circle_x(w, B, &B[i], i, i_fixed, j, now, best, tests, check, al, feat);
         }
     }
 }
@@ -186,13 +226,26 @@ CC__INLINE_ALWAYS void cc__scan_block_x(const cc_world *w, const cc__body *B, in
 static void cc__scan_block(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0, int32_t y0, int nx,
                            int ny, cc__cand *best, uint64_t *tests)
 {
-    cc__scan_block_x(w, B, i, i_fixed, x0, y0, nx, ny, best, tests, 0, NULL);
+    cc__scan_block_x(w, B, i, i_fixed, x0, y0, nx, ny, best, tests, 0, NULL, 0);
 }
 
 static void cc__scan_block_alone(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0, int32_t y0,
                                  cc__cand *best, uint64_t *tests, cc__alone *al)
 {
-    cc__scan_block_x(w, B, i, i_fixed, x0, y0, 3, 3, best, tests, 1, al);
+    cc__scan_block_x(w, B, i, i_fixed, x0, y0, 3, 3, best, tests, 1, al, 0);
+}
+
+/* The same for a world with filters or sensors. */
+static void cc__scan_block_feat(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0, int32_t y0,
+                                int nx, int ny, cc__cand *best, uint64_t *tests)
+{
+    cc__scan_block_x(w, B, i, i_fixed, x0, y0, nx, ny, best, tests, 0, NULL, 1);
+}
+
+static void cc__scan_block_alone_feat(const cc_world *w, const cc__body *B, int i, int i_fixed, int32_t x0,
+                                      int32_t y0, cc__cand *best, uint64_t *tests, cc__alone *al)
+{
+    cc__scan_block_x(w, B, i, i_fixed, x0, y0, 3, 3, best, tests, 1, al, 1);
 }
 
 /* Stores the prediction and queues the body by its earlier event. */
@@ -201,7 +254,7 @@ static void cc__finish(cc_world *w, int i, cc__cand *best, double t_cross, int32
     cc__body *bi = &CC__ARR(w, cc__body, off_body)[i];
     cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
     if (w->n_segments > 0 && !isinf(CC__CARR(w, cc__cold, off_cold)[i].m))
-        cc__try_segments(w, bi, t_cross, best);
+        cc__try_segments(w, i, bi, t_cross, best);
     ev->t = best->t;
     ev->kind = best->kind;
     ev->partner = best->partner;
@@ -217,7 +270,7 @@ static void cc__finish(cc_world *w, int i, cc__cand *best, double t_cross, int32
 /* The neighbour scan of a prediction of moving body i, at now: its earliest hit on a circle
  * into *best and its cell crossing into *t_cross, *dir. Returns the pair tests made. */
 CC__INLINE_ALWAYS uint64_t cc__predict_scan(cc_world *w, int i, cc__cand *best, double *t_cross, int32_t *dir,
-                                            int check, cc__alone *al)
+                                            int check, cc__alone *al, int feat)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
@@ -233,15 +286,19 @@ CC__INLINE_ALWAYS uint64_t cc__predict_scan(cc_world *w, int i, cc__cand *best, 
     if (!w->use_grid || (C[i].flags & CC__LARGE)) {
         for (j = 0; j < w->id_end; j++)
             if (j != i && (C[j].flags & CC__ALIVE))
-                cc__try_circle_x(w, B, bi, fixed, j, w->now, best, &tests, check, al);
+                cc__try_circle_x(w, B, bi, i, fixed, j, w->now, best, &tests, check, al, feat);
     } else {
-        if (check)
+        if (check && feat)
+            cc__scan_block_alone_feat(w, B, i, fixed, bi->cx - 1, bi->cy - 1, best, &tests, al);
+        else if (check)
             cc__scan_block_alone(w, B, i, fixed, bi->cx - 1, bi->cy - 1, best, &tests, al);
+        else if (feat)
+            cc__scan_block_feat(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, best, &tests);
         else
             cc__scan_block(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, best, &tests);
         for (j = w->large_head; j >= 0; j = B[j].next)
             if (j != i)
-                cc__try_circle_x(w, B, bi, fixed, j, w->now, best, &tests, check, al);
+                cc__try_circle_x(w, B, bi, i, fixed, j, w->now, best, &tests, check, al, feat);
         *t_cross = cc__cross_time(w, bi, dir);
     }
     return tests;
@@ -261,7 +318,10 @@ void cc__predict(cc_world *w, int i)
         return;
     }
     cc__advance_body(bi, w->now);
-    w->stats.pairs_tested += cc__predict_scan(w, i, &best, &t_cross, &dir, 0, NULL);
+    if (w->features & CC__F_PREDICT)
+        w->stats.pairs_tested += cc__predict_scan(w, i, &best, &t_cross, &dir, 0, NULL, 1);
+    else
+        w->stats.pairs_tested += cc__predict_scan(w, i, &best, &t_cross, &dir, 0, NULL, 0);
     cc__finish(w, i, &best, t_cross, dir);
 }
 
@@ -280,12 +340,18 @@ int cc__predict_pair_alone(cc_world *w, int a, int b, double reach_a, double rea
     al.near = 0;
     al.partner = b;
     al.reach = reach_a;
-    tests = cc__predict_scan(w, a, &best_a, &tc_a, &dir_a, 1, &al);
+    if (w->features & CC__F_PREDICT)
+        tests = cc__predict_scan(w, a, &best_a, &tc_a, &dir_a, 1, &al, 1);
+    else
+        tests = cc__predict_scan(w, a, &best_a, &tc_a, &dir_a, 1, &al, 0);
     if (al.near)
         return 1;
     al.partner = a;
     al.reach = reach_b;
-    tests += cc__predict_scan(w, b, &best_b, &tc_b, &dir_b, 1, &al);
+    if (w->features & CC__F_PREDICT)
+        tests += cc__predict_scan(w, b, &best_b, &tc_b, &dir_b, 1, &al, 1);
+    else
+        tests += cc__predict_scan(w, b, &best_b, &tc_b, &dir_b, 1, &al, 0);
     if (al.near)
         return 1;
     w->stats.pairs_tested += tests;
@@ -305,7 +371,8 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
     int32_t ndir;
     int fixed = isinf(C[i].m);
     cc__cand best;
-    if (ev->kind == CC__EV_CIRCLE && (!(C[ev->partner].flags & CC__ALIVE) || B[ev->partner].count != ev->pcount)) {
+    if ((ev->kind == CC__EV_CIRCLE || ev->kind == CC__EV_SENSOR) &&
+        (!(C[ev->partner].flags & CC__ALIVE) || B[ev->partner].count != ev->pcount)) {
         cc__predict(w, i); /* the known hit is stale: the old cells need a new look too */
         return;
     }
@@ -313,10 +380,16 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
     best.kind = ev->kind;
     best.partner = ev->partner;
     best.pcount = ev->pcount;
-    if (dir < 2) /* a new column of cells right or left */
+    if (w->features & CC__F_PREDICT) {
+        if (dir < 2)
+            cc__scan_block_feat(w, B, i, fixed, dir == 0 ? cx + 1 : cx - 1, cy - 1, 1, 3, &best, &tests);
+        else
+            cc__scan_block_feat(w, B, i, fixed, cx - 1, dir == 2 ? cy + 1 : cy - 1, 3, 1, &best, &tests);
+    } else if (dir < 2) { /* a new column of cells right or left */
         cc__scan_block(w, B, i, fixed, dir == 0 ? cx + 1 : cx - 1, cy - 1, 1, 3, &best, &tests);
-    else /* a new row of cells above or below */
+    } else { /* a new row of cells above or below */
         cc__scan_block(w, B, i, fixed, cx - 1, dir == 2 ? cy + 1 : cy - 1, 3, 1, &best, &tests);
+    }
     w->stats.pairs_tested += tests;
     t_cross = cc__cross_time(w, &B[i], &ndir);
     cc__finish(w, i, &best, t_cross, ndir);

@@ -37,10 +37,11 @@ void cc__world_report(cc_world *w, int a, int b, int seg, const cc_contact *k, d
     w->on_contact(&e, w->user);
 }
 
-/* Restitution for an approach speed: 0 below rest_speed (the inelastic-collapse remedy). */
-static double cc__restitution_for(const cc_world *w, double approach)
+/* Restitution of contact a-b (b < 0: wall seg) for an approach speed: 0 below rest_speed (the
+ * inelastic-collapse remedy), else the mix of the two sides' (props.c). */
+static double cc__restitution_for(const cc_world *w, double approach, int a, int b, int seg)
 {
-    return approach < w->rest_speed ? 0.0 : w->restitution;
+    return approach < w->rest_speed ? 0.0 : cc__contact_restitution(w, a, b, seg);
 }
 
 void cc__world_overlap_seen(cc_world *w, double depth)
@@ -86,7 +87,7 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc, cc_contact *held, d
         k.point = cc__advance(ca.pos, k.normal, ca.radius - 0.5 * k.depth);
         cc__world_overlap_seen(w, k.depth);
         approach = -cc__dot(cc__sub(cb.vel, ca.vel), k.normal);
-        if (cc_respond(&ca, &cb, &k, cc__restitution_for(w, approach)) != CC_HIT)
+        if (cc_respond(&ca, &cb, &k, cc__restitution_for(w, approach, tc->a, tc->b, -1)) != CC_HIT)
             return 0;
         impulse = isinf(ca.mass) ? cb.mass * cc__length(cc__sub(cb.vel, cc__v(bb->vx, bb->vy)))
                                  : ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy)));
@@ -111,7 +112,7 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc, cc_contact *held, d
     k = cc__world_wall_contact(&ca, &CC__CARR(w, cc_segment, off_seg)[tc->segment]);
     cc__world_overlap_seen(w, k.depth);
     approach = cc__dot(ca.vel, k.normal);
-    if (isinf(ca.mass) || cc_respond_segment(&ca, &k, cc__restitution_for(w, approach)) != CC_HIT)
+    if (isinf(ca.mass) || cc_respond_segment(&ca, &k, cc__restitution_for(w, approach, tc->a, -1, tc->segment)) != CC_HIT)
         return 0;
     cc__world_report(w, tc->a, -1, tc->segment, &k, ca.mass * cc__length(cc__sub(ca.vel, cc__v(ba->vx, ba->vy))));
     ba->vx = ca.vel.x;
@@ -175,6 +176,9 @@ int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
     tc.a = a;
     tc.b = b;
     tc.segment = seg;
+    if ((w->features & (CC__F_FILTER | CC__F_SENSOR)) &&
+        !(b >= 0 ? cc__circles_interact(w, a, b) : cc__wall_interacts(w, a, seg)))
+        return 0; /* they pass through each other */
     if (b >= 0) {
         cc__body *bb = &B[b];
         cc_circle cb = cc__as_circle(w, b);

@@ -235,6 +235,23 @@ int cc__cluster_pair_reach(const cc_world *w, int a, int b, double *reach_a, dou
     return 0;
 }
 
+/* The cluster's restitution: the smallest of its contacts' (each the mix of its two sides'), so
+ * that a cluster of one material behaves as before and kinetic energy never grows (the model
+ * takes one coefficient; docs/SIMULTANEOUS.md). */
+static double cc__clu_restitution(const cc__clu *c)
+{
+    double e = c->w->restitution;
+    int i;
+    if (!(c->w->features & CC__F_RESTITUTION))
+        return e;
+    for (i = 0; i < c->nc; i++) {
+        const cc__cluster_contact *k = &c->contact[i];
+        double ek = cc__contact_restitution(c->w, c->id[k->a], k->b >= 0 ? c->id[k->b] : -1, c->seg[i]);
+        e = i == 0 || ek < e ? ek : e;
+    }
+    return e;
+}
+
 /* The world's own test of an impact: does touch t still approach? */
 static int cc__still_approaching(const cc_world *w, const cc__touch *t)
 {
@@ -276,7 +293,7 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
     cc__clu_gather(&c);
     if (c.nc <= 1 && n == 1)
         return cc__world_resolve_pairwise(w, touch, n); /* nothing else touches: a pair impact */
-    if (cc__cluster_resolve(c.body, c.nb, c.contact, c.nc, w->restitution, w->rest_speed, c.scratch,
+    if (cc__cluster_resolve(c.body, c.nb, c.contact, c.nc, cc__clu_restitution(&c), w->rest_speed, c.scratch,
                             c.scratch_bytes, &rep) != CC_OK)
         return cc__world_resolve_pairwise(w, touch, n); /* cannot happen: valid by construction */
     /* new velocities from this instant on: each changed body is carried to now first */

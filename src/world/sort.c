@@ -66,6 +66,7 @@ void cc__sort_bodies(cc_world *w)
     cc__body *B = CC__ARR(w, cc__body, off_body);
     cc__cold *C = CC__ARR(w, cc__cold, off_cold);
     cc__event *EV = CC__ARR(w, cc__event, off_ev);
+    cc__props *P = CC__ARR(w, cc__props, off_props);
     int32_t *idx2id = CC__ARR(w, int32_t, off_idx2id), *id2idx = CC__ARR(w, int32_t, off_id2idx);
     int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
     cc__sort_entry *e = CC__ARR(w, cc__sort_entry, off_heap); /* the queue is rebuilt below */
@@ -87,6 +88,7 @@ void cc__sort_bodies(cc_world *w)
         cc__body tb;
         cc__cold tc;
         cc__event te;
+        cc__props tp;
         int32_t tid;
         int q = p;
         if (e[p].done)
@@ -94,6 +96,7 @@ void cc__sort_bodies(cc_world *w)
         tb = B[p];
         tc = C[p];
         te = EV[p];
+        tp = P[p];
         tid = idx2id[p];
         for (;;) {
             int src = e[q].idx;
@@ -102,12 +105,14 @@ void cc__sort_bodies(cc_world *w)
                 B[q] = tb;
                 C[q] = tc;
                 EV[q] = te;
+                P[q] = tp;
                 idx2id[q] = tid;
                 break;
             }
             B[q] = B[src];
             C[q] = C[src];
             EV[q] = EV[src];
+            P[q] = P[src];
             idx2id[q] = idx2id[src];
             q = src;
         }

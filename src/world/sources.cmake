@@ -13,4 +13,6 @@ list(APPEND CC_WORLD_SOURCES
   world/exact.c     # EXACT stepping
   world/swept.c     # SWEPT stepping
   world/discrete.c  # DISCRETE stepping
+  world/props.c     # per-body properties: the API, filters, restitution mixing
+  world/sensor.c    # sensor circles: overlaps begun and ended
 )

@@ -52,6 +52,8 @@ static void cc__pair(cc_world *w, int i, int j, double dt)
         return;
     if (isinf(C[i].m) && isinf(C[j].m))
         return;
+    if ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__circles_interact(w, i, j))
+        return; /* they pass through each other (a sensor's overlaps: cc__sensor_pass) */
     w->stats.pairs_tested++;
     r = cc__sweep_rel(dp, dv, R, 0, 0, dt, &t, &n);
     if (r == CC_MISS ||
@@ -80,6 +82,8 @@ static void cc__walls(cc_world *w, int i, double dt, const cc__walls_boxed *wb)
         cc__wall_box tmp;
         const cc__wall_box *g = cc__wall_box_at(w, wb, nb, s, &tmp);
         if ((g->x0 > x1) | (g->x1 < x0) | (g->y0 > y1) | (g->y1 < y0)) /* one branch, mostly taken */
+            continue;
+        if ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__wall_interacts(w, i, s))
             continue;
         if (first) { /* the body's cold part only when a wall is near */
             c.mass = CC__CARR(w, cc__cold, off_cold)[i].m;
@@ -232,5 +236,6 @@ int cc__step_swept(cc_world *w, double dt)
             ; /* no prediction again within the step: that is the mode */
     }
     w->now = t_end;
+    cc__sensor_pass(w);
     return CC_OK;
 }

@@ -28,6 +28,9 @@ CC_API void cc_world_def_init(cc_world_def *def)
     def->max_events = 10000000u;
     def->on_contact = NULL;
     def->user = NULL;
+    def->rolling_decel = 0.0;
+    def->restitution_mix = CC_MIX_MIN;
+    def->on_sensor = NULL;
 }
 
 size_t cc__whole_fields(size_t n, const size_t *ends, int count)
@@ -50,7 +53,9 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
         CC__END(cc_world_def, max_segments), CC__END(cc_world_def, mode),
         CC__END(cc_world_def, restitution), CC__END(cc_world_def, rest_speed),
         CC__END(cc_world_def, cell_size), CC__END(cc_world_def, max_events),
-        CC__END(cc_world_def, on_contact), CC__END(cc_world_def, user)};
+        CC__END(cc_world_def, on_contact), CC__END(cc_world_def, user),
+        CC__END(cc_world_def, rolling_decel), CC__END(cc_world_def, restitution_mix),
+        CC__END(cc_world_def, on_sensor)};
     if (in == NULL)
         return CC_ERR_INVALID;
     if (in->struct_size < CC__DEF_MIN)
@@ -62,7 +67,9 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
         out->max_segments > CC__MAX_CAPACITY || out->mode < CC_MODE_EXACT || out->mode > CC_MODE_DISCRETE ||
         !(out->restitution >= 0.0 && out->restitution <= 1.0) ||
         !(out->rest_speed >= 0.0 && isfinite(out->rest_speed)) ||
-        !(out->cell_size >= 0.0 && isfinite(out->cell_size)) || out->max_events == 0)
+        !(out->cell_size >= 0.0 && isfinite(out->cell_size)) || out->max_events == 0 ||
+        !(out->rolling_decel >= 0.0 && isfinite(out->rolling_decel)) || out->restitution_mix < CC_MIX_MIN ||
+        out->restitution_mix > CC_MIX_MEAN)
         return CC_ERR_INVALID;
     /* where size_t has 32 bits, the capacities must also leave the byte count representable */
     if ((size_t)out->max_circles > (SIZE_MAX - 65536u) / 1024u ||
@@ -93,7 +100,7 @@ static uint32_t cc__slots(int max_circles)
 static size_t cc__layout(const cc_world_def *d, cc_world *w)
 {
     size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
-    size_t offs[12], sizes[12];
+    size_t offs[14], sizes[14];
     int clu_b, clu_c;
     int k;
     sizes[0] = n * sizeof(cc__body);
@@ -108,7 +115,9 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[9] = n * sizeof(int32_t);  /* id -> index */
     sizes[10] = n * sizeof(int32_t); /* index -> id */
     sizes[11] = cc__cluster_block(d->max_circles, d->mode, &clu_b, &clu_c); /* EXACT's clusters */
-    for (k = 0; k < 12; k++) {
+    sizes[12] = n * sizeof(cc__props);
+    sizes[13] = (size_t)d->max_segments * sizeof(cc__segment_props);
+    for (k = 0; k < 14; k++) {
         offs[k] = off;
         off += cc__align16(sizes[k]);
     }
@@ -125,6 +134,8 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_id2idx = offs[9];
         w->off_idx2id = offs[10];
         w->off_clu = offs[11];
+        w->off_props = offs[12];
+        w->off_segprops = offs[13];
         w->clu_bodies = clu_b;
         w->clu_contacts = clu_c;
     }
@@ -163,6 +174,10 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
     w->max_events = d.max_events;
     w->on_contact = d.on_contact;
     w->user = d.user;
+    w->on_sensor = d.on_sensor;
+    w->rolling_decel = d.rolling_decel;
+    w->mix = d.restitution_mix;
+    w->features = d.rolling_decel > 0.0 ? CC__F_ROLL : 0;
     w->now = 0.0;
     w->use_grid = d.max_circles > CC__SMALL_WORLD;
     w->slot_mask = cc__slots(d.max_circles) - 1u;
@@ -209,10 +224,13 @@ double cc__world_cell_size(const cc_world *w)
     const cc__cold *k = CC__CARR(w, cc__cold, off_cold);
     double dmax = 0.0, any = 0.0, cs;
     int i;
+    const cc__props *P = CC__CARR(w, cc__props, off_props);
     for (i = 0; i < w->id_end; i++) {
         if (!(k[i].flags & CC__ALIVE))
             continue;
-        if (!isinf(k[i].m) && 2.0 * b[i].r > dmax)
+        /* a sensor, even a moving one, touches nothing: wider than the cells, it goes on the
+         * large list instead of widening them */
+        if (!isinf(k[i].m) && 2.0 * b[i].r > dmax && !((w->features & CC__F_SENSOR) && P[i].sensor >= 0))
             dmax = 2.0 * b[i].r;
         if (2.0 * b[i].r > any)
             any = 2.0 * b[i].r;
@@ -272,6 +290,7 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
         CC__ARR(w, cc__body, off_body)[id].count = 0; /* first use of this slot of memory */
     }
     w->n_circles++;
+    cc__props_default(w, &CC__ARR(w, cc__props, off_props)[CC__ARR(w, int32_t, off_id2idx)[id]]);
     cc__put_guarded(w, CC__ARR(w, int32_t, off_id2idx)[id], c);
     return id;
 }
@@ -307,6 +326,7 @@ CC_API int cc_world_remove_circle(cc_world *w, int id)
     if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
     cc__unfile(w, k);
+    cc__sensor_forget(w, k, 1); /* a removed circle's overlaps are forgotten, not reported */
     CC__ARR(w, cc__cold, off_cold)[k].flags = 0;
     CC__ARR(w, int32_t, off_free)[w->free_top++] = id;
     w->n_circles--;
@@ -320,6 +340,12 @@ CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s)
     if (w->n_segments >= w->max_segments)
         return CC_ERR_FULL;
     CC__ARR(w, cc_segment, off_seg)[w->n_segments] = *s;
+    {
+        cc__segment_props *q = &CC__ARR(w, cc__segment_props, off_segprops)[w->n_segments];
+        q->restitution = w->restitution;
+        q->category = 1u;
+        q->mask = 0xFFFFFFFFu;
+    }
     w->dirty = 1; /* every body may now meet it: predictions are redone at the next step */
     return w->n_segments++;
 }

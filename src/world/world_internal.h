@@ -30,6 +30,31 @@ typedef struct cc__cold {
     int32_t prev;   /* previous circle in its list, -1 for the first */
 } cc__cold;
 
+/* Per-body properties (issue 13) and rolling (issue 12): what only a world that uses those
+ * features reads, kept apart so that the hot and cold lines of a world without them are as in
+ * 1.0. Storage order, like the others (sort.c permutes it). */
+typedef struct cc__props {
+    double restitution;
+    double decel;       /* rolling deceleration; 0 for an immovable circle */
+    uint64_t inside;    /* the sensors (by slot) this circle overlaps now */
+    uint32_t category, mask;
+    int32_t sensor;     /* its sensor slot, or -1 */
+    int32_t pad_;
+} cc__props;
+
+typedef struct cc__segment_props {
+    double restitution;
+    uint32_t category, mask;
+} cc__segment_props;
+
+/* What the world's circles and walls use beyond 1.0 (w->features): set when a circle or wall is
+ * given such a property, never cleared. Each selects the paths that pay for it. */
+#define CC__F_RESTITUTION 1 /* some restitution differs from def.restitution */
+#define CC__F_FILTER 2      /* some category or mask differs from the defaults */
+#define CC__F_SENSOR 4      /* some circle is or was a sensor */
+#define CC__F_ROLL 8        /* some circle decelerates */
+#define CC__F_PREDICT (CC__F_FILTER | CC__F_SENSOR | CC__F_ROLL) /* what predictions must read */
+
 #define CC__ALIVE 1
 #define CC__LARGE 2  /* wider than a grid cell (immovable only): kept on the large list */
 #define CC__MOVED 4   /* moved by an overlap pass: to be re-filed in the grid */
@@ -39,6 +64,7 @@ typedef struct cc__cold {
 #define CC__EV_NONE 0
 #define CC__EV_CIRCLE 1  /* partner = circle id, pcount = its count when predicted */
 #define CC__EV_SEGMENT 2 /* partner = segment id */
+#define CC__EV_SENSOR 3  /* a sensor begins or ends overlapping: partner = the other circle */
 
 /* A body's predictions: its earliest hit, and (EXACT with a grid) when it leaves its cell and
  * through which side (dir 0:+x 1:-x 2:+y 3:-y). The hit is searched without a time limit among
@@ -76,6 +102,12 @@ struct cc_world {
     uint64_t max_events;
     cc_contact_fn on_contact;
     void *user;
+    cc_sensor_fn on_sensor;
+    double rolling_decel;
+    int mix;          /* restitution_mix */
+    int features;     /* CC__F_* */
+    uint64_t sensor_slots;             /* slots in use */
+    int32_t sensor_id[CC_MAX_SENSORS]; /* the circle id of each slot's sensor */
 
     double now;       /* world time */
     double cs, inv_cs; /* cell size in use and its inverse */
@@ -98,6 +130,7 @@ struct cc_world {
     size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_free, off_touched, off_slot, off_seg;
     size_t off_id2idx, off_idx2id; /* a circle's id <-> its storage index (see sort.c) */
     size_t off_clu;                /* EXACT: the simultaneous-impact cluster (simultaneous.c) */
+    size_t off_props, off_segprops; /* per-body properties (props.c) */
     int clu_bodies, clu_contacts;  /* its capacities; 0 when the world has none */
 };
 
@@ -232,9 +265,39 @@ static inline int cc__sort_due(const cc_world *w)
     return w->use_grid && w->stats.events - w->events_at_sort > (uint64_t)w->n_circles * 64u + 1024u;
 }
 
+/* ---- props.c: per-body properties, filters, restitution mixing ---- */
+void cc__props_default(const cc_world *w, cc__props *p); /* a new circle's */
+/* Whether circles i and j interact (filters; sensors with sensors do not). */
+static inline int cc__filter_pass(const cc__props *a, const cc__props *b)
+{
+    return (a->category & b->mask) != 0 && (b->category & a->mask) != 0;
+}
+int cc__circles_interact(const cc_world *w, int i, int j);
+int cc__wall_interacts(const cc_world *w, int i, int s);
+/* The restitution of contact i-j (j < 0: wall s) before rest_speed is applied. */
+double cc__contact_restitution(const cc_world *w, int i, int j, int s);
+
+/* ---- sensor.c: sensor events ---- */
+/* Whether sensor s and visitor v overlap at w->now (their distance less than the radius sum). */
+int cc__sensor_overlaps(const cc_world *w, int s, int v);
+/* Circle i (storage index) was added, set, moved or given properties: its sensor overlaps are
+ * brought up to date at w->now, each change reported (begin or end). */
+void cc__sensor_refresh(cc_world *w, int i);
+/* Circle i is removed or stops being a sensor: its overlaps are forgotten (nothing reported
+ * when `quiet`, else an end for each). */
+void cc__sensor_forget(cc_world *w, int i, int quiet);
+/* EXACT: when the sensor pair i-j (one a sensor, the other an admitted visitor) next begins or
+ * ends overlapping, at or after w->now: +INFINITY when never. Both at w->now. */
+double cc__sensor_next(const cc_world *w, int i, int j);
+/* EXACT: the predicted sensor event of i with j is due now: membership toggled and reported. */
+void cc__sensor_event(cc_world *w, int i, int j);
+/* SWEPT and DISCRETE: every sensor's overlaps brought up to date at the end of the step. */
+void cc__sensor_pass(cc_world *w);
+
 /* ---- overlap.c / exact.c / swept.c / discrete.c ---- */
 void cc__rebuild(cc_world *w); /* grid, overlaps and (EXACT) every prediction, at w->now */
 void cc__settle_body(cc_world *w, int id); /* a body added or set: overlaps and predictions */
+void cc__settle_props(cc_world *w, int id); /* a body given other properties, where it is */
 int cc__step_exact(cc_world *w, double t_end);
 int cc__step_swept(cc_world *w, double dt);
 int cc__step_discrete(cc_world *w, double dt);
