@@ -114,7 +114,7 @@ int cc__step_exact(cc_world *w, double t_end)
             cc__grid_move(w, i, dir);
             w->stats.cell_crossings++;
             cc__predict_crossed(w, i, dir);
-        } else if (e->kind == CC__EV_CIRCLE || e->kind == CC__EV_SENSOR) {
+        } else if (e->kind != CC__EV_SEGMENT) { /* a circle, or a sensor pair's begin or end */
             j = e->partner;
             if (!(CC__CARR(w, cc__cold, off_cold)[j].flags & CC__ALIVE) || B[j].count != e->pcount) {
                 w->stats.stale_events++;
@@ -122,8 +122,9 @@ int cc__step_exact(cc_world *w, double t_end)
                 continue;
             }
             cc__advance_body(&B[j], w->now);
-            if (e->kind == CC__EV_SENSOR) { /* no trajectory changes: the body looks ahead again */
-                cc__sensor_event(w, i, j);
+            if (e->kind != CC__EV_CIRCLE) { /* no trajectory changes: the body looks ahead again */
+                if (!cc__sensor_event(w, i, j, e->kind))
+                    w->stats.stale_events++; /* the other body of the pair reported it first */
                 cc__predict(w, i);
                 continue;
             }

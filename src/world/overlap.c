@@ -251,6 +251,7 @@ void cc__settle_props(cc_world *w, int id)
         return; /* the next step's rebuild does it all */
     /* where it is: others' predictions with it go stale, pairs that now interact are pushed
      * apart, and everything about it is predicted again */
+    cc__advance_body(&CC__ARR(w, cc__body, off_body)[id], w->now); /* the push-apart reads it at now */
     CC__ARR(w, cc__body, off_body)[id].count++;
     cc__unoverlap_body(w, id, 0);
     cc__settle_after(w, id);

@@ -62,27 +62,22 @@ CC__NOINLINE void cc__try_sensor(const cc_world *w, int i, int j, cc__cand *best
     if (!(t < best->t))
         return;
     best->t = t;
-    best->kind = CC__EV_SENSOR;
+    best->kind = cc__sensor_inside(w, i, j) ? CC__EV_END : CC__EV_BEGIN;
     best->partner = j;
     best->pcount = CC__CARR(w, cc__body, off_body)[j].count;
 }
 
 /* What a world with filters or sensors decides before the geometry of pair i-j (feat): 1 when
  * the pair is done with (filtered out, two sensors, or a sensor pair handled here). */
-CC__INLINE_ALWAYS int cc__featured_pair(const cc_world *w, const cc__body *bj, int i, int j, cc__cand *best,
-                                        uint64_t *tests)
+CC__INLINE_ALWAYS int cc__featured_pair(const cc_world *w, int i, int j, cc__cand *best, uint64_t *tests)
 {
     const cc__props *P = CC__CARR(w, cc__props, off_props);
     if (!cc__filter_pass(&P[i], &P[j]))
         return 1;
     if (P[i].sensor < 0 && P[j].sensor < 0)
         return 0;
-    /* a sensor pair: the visitor holds its events while it moves, the sensor while it rests */
-    if (P[i].sensor >= 0 && P[j].sensor >= 0)
-        return 1;
-    if (P[i].sensor >= 0 && (bj->vx != 0.0 || bj->vy != 0.0))
-        return 1;
-    cc__try_sensor(w, i, j, best, tests);
+    if (P[i].sensor < 0 || P[j].sensor < 0) /* a sensor and its visitor (sensors sense no sensor) */
+        cc__try_sensor(w, i, j, best, tests);
     return 1;
 }
 
@@ -97,7 +92,7 @@ CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, co
     const cc__body *bj = &B[j];
     double dt = now - bj->t, R, dv2, cr;
     cc_vec2 dp, dv;
-    if (feat && cc__featured_pair(w, bj, i, j, best, tests))
+    if (feat && cc__featured_pair(w, i, j, best, tests))
         return;
     if (i_fixed && isinf(CC__CARR(w, cc__cold, off_cold)[j].m))
         return; /* two immovable circles pass through each other */
@@ -371,7 +366,7 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
     int32_t ndir;
     int fixed = isinf(C[i].m);
     cc__cand best;
-    if ((ev->kind == CC__EV_CIRCLE || ev->kind == CC__EV_SENSOR) &&
+    if (ev->kind != CC__EV_NONE && ev->kind != CC__EV_SEGMENT &&
         (!(C[ev->partner].flags & CC__ALIVE) || B[ev->partner].count != ev->pcount)) {
         cc__predict(w, i); /* the known hit is stale: the old cells need a new look too */
         return;

@@ -54,7 +54,7 @@ double cc__contact_restitution(const cc_world *w, int i, int j, int s)
 {
     const cc__props *P = CC__CARR(w, cc__props, off_props);
     if (!(w->features & CC__F_RESTITUTION))
-        return w->restitution; /* every side has def.restitution, and each rule mixes it to itself */
+        return w->restitution; /* every side has def.restitution, which the rule mixes to itself */
     if (j >= 0)
         return cc__mix(w->mix, P[i].restitution, P[j].restitution);
     return cc__mix(w->mix, P[i].restitution, CC__CARR(w, cc__segment_props, off_segprops)[s].restitution);

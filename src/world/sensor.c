@@ -2,8 +2,10 @@
  * begins or stops overlapping them. Each visitor (a non-sensor circle) keeps the set of sensors
  * it overlaps as bits of its properties (one per sensor slot, CC_MAX_SENSORS of them), so that
  * what the world reports always alternates begin, end, begin for a pair, whatever rounding does
- * at the boundary. EXACT predicts each pair's next change like an impact (the visitor holds the
- * event when it moves, else the sensor); SWEPT and DISCRETE compare at the end of each step. */
+ * at the boundary. EXACT predicts each pair's next change like an impact, from both bodies (the
+ * grid finds a pair from whichever of the two crosses into the other's neighbourhood); the
+ * event says which change it is, and the second body to reach it finds it done. SWEPT and
+ * DISCRETE compare at the end of each step. */
 #include "world_internal.h"
 
 #include "precision_double.h"
@@ -163,11 +165,21 @@ double cc__sensor_next(const cc_world *w, int i, int j)
     }
 }
 
-void cc__sensor_event(cc_world *w, int i, int j)
+int cc__sensor_inside(const cc_world *w, int i, int j)
 {
     int s, v;
     cc__roles(w, i, j, &s, &v);
-    cc__report(w, s, v, !cc__inside(w, s, v));
+    return cc__inside(w, s, v);
+}
+
+int cc__sensor_event(cc_world *w, int i, int j, int kind)
+{
+    int s, v, begin = kind == CC__EV_BEGIN;
+    cc__roles(w, i, j, &s, &v);
+    if (cc__inside(w, s, v) == begin)
+        return 0;
+    cc__report(w, s, v, begin);
+    return 1;
 }
 
 void cc__sensor_pass(cc_world *w)

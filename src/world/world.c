@@ -178,6 +178,8 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
     w->rolling_decel = d.rolling_decel;
     w->mix = d.restitution_mix;
     w->features = d.rolling_decel > 0.0 ? CC__F_ROLL : 0;
+    if (d.restitution_mix == CC_MIX_PRODUCT && d.restitution != 0.0 && d.restitution != 1.0)
+        w->features |= CC__F_RESTITUTION; /* even two defaults make e^2, not e */
     w->now = 0.0;
     w->use_grid = d.max_circles > CC__SMALL_WORLD;
     w->slot_mask = cc__slots(d.max_circles) - 1u;

@@ -64,7 +64,8 @@ typedef struct cc__segment_props {
 #define CC__EV_NONE 0
 #define CC__EV_CIRCLE 1  /* partner = circle id, pcount = its count when predicted */
 #define CC__EV_SEGMENT 2 /* partner = segment id */
-#define CC__EV_SENSOR 3  /* a sensor begins or ends overlapping: partner = the other circle */
+#define CC__EV_BEGIN 3   /* a sensor pair begins overlapping: partner = the other circle */
+#define CC__EV_END 4     /* a sensor pair stops overlapping: partner = the other circle */
 
 /* A body's predictions: its earliest hit, and (EXACT with a grid) when it leaves its cell and
  * through which side (dir 0:+x 1:-x 2:+y 3:-y). The hit is searched without a time limit among
@@ -289,8 +290,12 @@ void cc__sensor_forget(cc_world *w, int i, int quiet);
 /* EXACT: when the sensor pair i-j (one a sensor, the other an admitted visitor) next begins or
  * ends overlapping, at or after w->now: +INFINITY when never. Both at w->now. */
 double cc__sensor_next(const cc_world *w, int i, int j);
-/* EXACT: the predicted sensor event of i with j is due now: membership toggled and reported. */
-void cc__sensor_event(cc_world *w, int i, int j);
+/* EXACT: whether the sensor pair i-j overlaps now by the world's account (its membership). */
+int cc__sensor_inside(const cc_world *w, int i, int j);
+/* EXACT: the predicted sensor event of i with j (kind CC__EV_BEGIN or CC__EV_END) is due now:
+ * reported and recorded, unless the pair is already so (both bodies of a pair predict its
+ * events; the second to come finds it done). Returns 1 when reported. */
+int cc__sensor_event(cc_world *w, int i, int j, int kind);
 /* SWEPT and DISCRETE: every sensor's overlaps brought up to date at the end of the step. */
 void cc__sensor_pass(cc_world *w);
 

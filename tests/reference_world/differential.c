@@ -62,6 +62,8 @@ typedef struct dw_sim {
     rw_world *r;
     int n_events;   /* events of the current call (the first DW_LOG_MAX are kept) */
     dw_event log[DW_LOG_MAX];
+    int n_sensed;   /* sensor events of the current call (the first DW_LOG_MAX are kept) */
+    cc_sensor_event sensed[DW_LOG_MAX];
 } dw_sim;
 
 static int sim_get(const dw_sim *s, int *ids, cc_circle *c, int cap)
@@ -88,17 +90,26 @@ static void snapshot(dw_sim *s, const cc_contact_event *e)
 
 static void on_contact(const cc_contact_event *e, void *user) { snapshot((dw_sim *)user, e); }
 
+static void on_sensor(const cc_sensor_event *e, void *user)
+{
+    dw_sim *s = (dw_sim *)user;
+    if (s->n_sensed < DW_LOG_MAX)
+        s->sensed[s->n_sensed] = *e;
+    s->n_sensed++;
+}
+
 static int sim_make(dw_sim *s, const char *name, const cc_world_def *def, int reference)
 {
     memset(s, 0, sizeof *s);
     s->name = name;
     if (reference) {
         s->r = (rw_world *)malloc(sizeof *s->r);
-        return s->r != NULL && rw_init(s->r, def, on_contact, s) == CC_OK;
+        return s->r != NULL && rw_init(s->r, def, on_contact, on_sensor, s) == CC_OK;
     } else {
         cc_world_def d = *def;
         size_t n = cc_world_size(&d);
         d.on_contact = on_contact;
+        d.on_sensor = on_sensor;
         d.user = s;
         s->mem = malloc(n);
         s->w = s->mem != NULL ? cc_world_init(s->mem, n, &d, NULL) : NULL;
@@ -118,10 +129,9 @@ typedef struct dw_scene {
     dw_rng rng;
     double box;          /* circles are placed in [-box, box]^2 */
     double rmin, rmax;   /* radii of new circles */
-    double rcap;         /* after the first step: no circle wider than the grid's cells, which
-                            would defer the push-apart to the next step (see "Overlaps") */
     double vmax;         /* largest speed */
     double L, T, J;      /* scales: length, time, impulse */
+    int props;           /* the scene sets per-body properties */
     cc_segment seg[8];
     int n_seg;
 } dw_scene;
@@ -157,7 +167,7 @@ static cc_circle random_circle(dw_scene *sc)
 {
     cc_circle c;
     double u = rng_unit(&sc->rng), speed, angle = rng_range(&sc->rng, 0.0, 6.283185307179586);
-    c.radius = rng_log(&sc->rng, sc->rmin, sc->rmax < sc->rcap ? sc->rmax : sc->rcap);
+    c.radius = rng_log(&sc->rng, sc->rmin, sc->rmax);
     c.pos.x = rng_range(&sc->rng, -sc->box + c.radius, sc->box - c.radius);
     c.pos.y = rng_range(&sc->rng, -sc->box + c.radius, sc->box - c.radius);
     c.mass = rng_log(&sc->rng, 0.1, 10.0) * c.radius * c.radius;
@@ -251,7 +261,8 @@ static int by_identity(const void *x, const void *y)
 static int doubtful(const dw_sim *ref)
 {
     const rw_doubt *d = &ref->r->doubt;
-    return d->tie_gap <= DW_TIE || d->graze_gap <= DW_GRAZE || d->slow <= DW_SLOW || d->slack <= DW_SLACK;
+    return d->tie_gap <= DW_TIE || d->graze_gap <= DW_GRAZE || d->slow <= DW_SLOW || d->slack <= DW_SLACK ||
+           d->chain;
 }
 
 /* The largest difference between two snapshots (the same ids in both): positions / L and
@@ -345,6 +356,47 @@ static dw_end compare_call(dw_cmp *c, const dw_sim *A, const dw_sim *B, const dw
     return DW_END_DONE;
 }
 
+static int by_pair(const void *x, const void *y)
+{
+    const cc_sensor_event *a = (const cc_sensor_event *)x, *b = (const cc_sensor_event *)y;
+    if (a->sensor != b->sensor)
+        return a->sensor < b->sensor ? -1 : 1;
+    if (a->visitor != b->visitor)
+        return a->visitor < b->visitor ? -1 : 1;
+    return a->t < b->t ? -1 : a->t > b->t; /* a pair's events alternate: time orders them */
+}
+
+/* The sensor events of one call: pair by pair, the same begins and ends at the same times (the
+ * order across pairs at one instant is the simulators' own). */
+static dw_end compare_sensors(dw_cmp *c, dw_sim *A, dw_sim *B, const dw_sim *ref, const char *call)
+{
+    int k, n = A->n_sensed;
+    if (A->n_sensed > DW_LOG_MAX || B->n_sensed > DW_LOG_MAX)
+        return DW_END_DONE; /* beyond what is compared */
+    if (A->n_sensed != B->n_sensed) {
+        if (c->apart > DW_APART || doubtful(ref))
+            return DW_END_TIE;
+        say(c->res, "%s: %s reports %d sensor events, %s %d", call, A->name, A->n_sensed, B->name, B->n_sensed);
+        return DW_END_FAILED;
+    }
+    qsort(A->sensed, (size_t)n, sizeof A->sensed[0], by_pair);
+    qsort(B->sensed, (size_t)n, sizeof B->sensed[0], by_pair);
+    for (k = 0; k < n; k++) {
+        const cc_sensor_event *a = &A->sensed[k], *b = &B->sensed[k];
+        double dt = fabs(a->t - b->t) / (fabs(b->t) + c->sc->T);
+        if (a->sensor != b->sensor || a->visitor != b->visitor || a->begin != b->begin ||
+            dt > DW_T_TOL + DW_GROW * c->apart) {
+            if (c->apart > DW_APART || doubtful(ref))
+                return DW_END_TIE;
+            say(c->res, "%s: sensor event (%d, %d, begin %d) at t = %.17g in %s, (%d, %d, begin %d) at t = %.17g in %s",
+                call, a->sensor, a->visitor, a->begin, a->t, A->name, b->sensor, b->visitor, b->begin, b->t, B->name);
+            return DW_END_FAILED;
+        }
+        c->res->sensor_events_compared++;
+    }
+    return DW_END_DONE;
+}
+
 /* After a call: the same circles, at states apart by no more than rounding explains. */
 static dw_end compare_states(dw_cmp *c, const dw_sim *A, const dw_sim *B, const dw_sim *ref, const char *call)
 {
@@ -378,7 +430,7 @@ static dw_end compare_states(dw_cmp *c, const dw_sim *A, const dw_sim *B, const 
             c->apart, doubtful(ref), A->n_events);
         /* every contact matched, so the velocities can differ only by what the contacts made of
          * the states' difference before them, and positions by that plus free flight since */
-        if (c->apart > DW_APART || A->n_events > DW_LOG_MAX || B->n_events > DW_LOG_MAX ||
+        if (c->apart > DW_APART || A->n_events > DW_LOG_MAX || B->n_events > DW_LOG_MAX || ref->r->doubt.chain ||
             (dv <= DW_GROW * (c->apart + DW_FRESH) && dp <= c->apart + dv + DW_FRESH))
             return DW_END_DIVERGED;
         say(c->res, "%s: states apart by %.3g L in position, %.3g V in velocity, with every contact matched (circle "
@@ -404,7 +456,89 @@ static void resync(dw_sim *ref, const dw_sim *from)
     ref->r->now = cc_world_time(from->w);
 }
 
-enum { CALL_ADD, CALL_REMOVE, CALL_SET, CALL_STEP };
+enum { CALL_ADD, CALL_REMOVE, CALL_SET, CALL_PROPS, CALL_SEGMENT_PROPS, CALL_STEP };
+static const char *const call_name[] = {"add", "remove", "set", "props", "segment props", "step"};
+
+typedef struct dw_call {
+    int kind, id;
+    cc_circle c;
+    cc_circle_props props;
+    cc_segment_props seg_props;
+    double dt;
+} dw_call;
+
+static int sim_call(dw_sim *m, const dw_call *k)
+{
+    m->n_events = 0;
+    m->n_sensed = 0;
+    if (m->w != NULL)
+        switch (k->kind) {
+        case CALL_ADD: return cc_world_add_circle(m->w, &k->c);
+        case CALL_REMOVE: return cc_world_remove_circle(m->w, k->id);
+        case CALL_SET: return cc_world_set_circle(m->w, k->id, &k->c);
+        case CALL_PROPS: return cc_world_set_circle_props(m->w, k->id, &k->props);
+        case CALL_SEGMENT_PROPS: return cc_world_set_segment_props(m->w, k->id, &k->seg_props);
+        default: return cc_world_step(m->w, k->dt);
+        }
+    switch (k->kind) {
+    case CALL_ADD: return rw_add_circle(m->r, &k->c);
+    case CALL_REMOVE: return rw_remove_circle(m->r, k->id);
+    case CALL_SET: return rw_set_circle(m->r, k->id, &k->c);
+    case CALL_PROPS: return rw_set_circle_props(m->r, k->id, &k->props);
+    case CALL_SEGMENT_PROPS: return rw_set_segment_props(m->r, k->id, &k->seg_props);
+    default: return rw_step(m->r, k->dt);
+    }
+}
+
+/* Random properties: restitution in [0.3, 1], one of three category bits, a mask that admits
+ * everything or all but one bit, a sensor now and then. */
+static cc_circle_props random_props(dw_scene *sc)
+{
+    cc_circle_props p;
+    p.struct_size = sizeof p;
+    p.restitution = rng_unit(&sc->rng) < 0.5 ? 1.0 : rng_range(&sc->rng, 0.3, 1.0);
+    p.rolling_decel = 0.0;
+    p.category = 1u << rng_int(&sc->rng, 3);
+    p.mask = rng_unit(&sc->rng) < 0.6 ? 0xFFFFFFFFu : ~(1u << rng_int(&sc->rng, 3));
+    p.sensor = rng_unit(&sc->rng) < 0.1;
+    return p;
+}
+
+/* The next call of the scene (a step ends each round of calls). Returns 0 when there is none
+ * to make this time (nothing to remove, no place found). */
+static int next_call(dw_scene *sc, const dw_sim *ref, int step, int last, int max_circles, dw_call *k)
+{
+    cc_circle live[DW_MAX_CIRCLES];
+    int ids[DW_MAX_CIRCLES], n_live = sim_get(ref, ids, live, DW_MAX_CIRCLES);
+    memset(k, 0, sizeof *k);
+    k->id = -1;
+    k->kind = last ? CALL_STEP : step == 0 ? CALL_ADD : rng_int(&sc->rng, sc->props ? 5 : 3);
+    switch (k->kind) {
+    case CALL_ADD:
+        return n_live < max_circles && place(sc, ref, -1, step > 0 && rng_unit(&sc->rng) < 0.25, &k->c);
+    case CALL_REMOVE:
+    case CALL_SET:
+    case CALL_PROPS:
+        if (n_live == 0)
+            return 0;
+        k->id = ids[rng_int(&sc->rng, n_live)];
+        if (k->kind == CALL_PROPS)
+            k->props = random_props(sc);
+        return k->kind != CALL_SET || place(sc, ref, k->id, rng_unit(&sc->rng) < 0.25, &k->c);
+    case CALL_SEGMENT_PROPS:
+        if (sc->n_seg == 0)
+            return 0;
+        k->id = rng_int(&sc->rng, sc->n_seg);
+        k->seg_props.struct_size = sizeof k->seg_props;
+        k->seg_props.restitution = rng_range(&sc->rng, 0.3, 1.0);
+        k->seg_props.category = 1u << rng_int(&sc->rng, 3);
+        k->seg_props.mask = rng_unit(&sc->rng) < 0.6 ? 0xFFFFFFFFu : ~(1u << rng_int(&sc->rng, 3));
+        return 1;
+    default:
+        k->dt = sc->T * rng_log(&sc->rng, 1e-3, 0.5);
+        return 1;
+    }
+}
 
 void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, dw_result *out)
 {
@@ -421,7 +555,6 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
     n0 = 2 + rng_int(&sc.rng, pairing == DW_SMALL_VS_GRID ? 20 : 63);
     sc.rmin = 1.0;
     sc.rmax = rng_log(&sc.rng, 1.0, 100.0);
-    sc.rcap = HUGE_VAL;
     sc.vmax = rng_log(&sc.rng, 0.01, 100.0);
     {   /* a box that holds the circles at an area fraction of 5% to 40% (E[r^2] of log-uniform radii) */
         double r2 = sc.rmax > 1.0 + 1e-9 ? (sc.rmax * sc.rmax - 1.0) / (2.0 * log(sc.rmax)) : 1.0;
@@ -437,6 +570,8 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
     def.max_events = 3000; /* a jam (see DW_END_JAMMED) costs little */
     def.restitution = rng_unit(&sc.rng) < 0.5 ? 1.0 : rng_range(&sc.rng, 0.3, 1.0);
     def.rest_speed = rng_unit(&sc.rng) < 0.3 ? sc.vmax * 1e-3 : 0.0;
+    sc.props = rng_unit(&sc.rng) < 0.5;
+    def.restitution_mix = sc.props ? rng_int(&sc.rng, 4) : CC_MIX_MIN;
     if (rng_unit(&sc.rng) < 0.5) { /* a box of walls */
         double b = sc.box;
         sc.seg[0] = (cc_segment){{-b, -b}, {b, -b}};
@@ -471,6 +606,9 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
     if (pairing == DW_SMALL_VS_GRID) {
         cc_world_def g = def;
         g.max_circles = 33 + rng_int(&sc.rng, 200);
+        /* cells wider than any circle: a wider one would make the gridded world wait for its next
+         * step to push it apart ("Overlaps"), which a world without a grid never does */
+        g.cell_size = 2.2 * sc.rmax;
         if (!sim_make(&sims[2], "world (grid)", &g, 0)) {
             say(out, "cannot make the gridded world");
             out->end = DW_END_FAILED;
@@ -495,60 +633,41 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
         }
     }
     for (step = 0; out->end == DW_END_DONE && out->events_compared < max_events && step < 60; step++) {
-        if (step == 1) { /* the largest movable radius the first step filed */
-            cc_circle live[DW_MAX_CIRCLES];
-            int n = sim_get(ref, NULL, live, DW_MAX_CIRCLES), i;
-            sc.rcap = sc.rmin;
-            for (i = 0; i < n; i++)
-                if (!isinf(live[i].mass) && live[i].radius > sc.rcap)
-                    sc.rcap = live[i].radius;
-        }
         int calls = step == 0 ? n0 : rng_int(&sc.rng, 4), q;
         for (q = 0; q <= calls && out->end == DW_END_DONE; q++) {
-            int kind = q == calls ? CALL_STEP : step == 0 ? CALL_ADD : rng_int(&sc.rng, 3), s, id = -1;
-            int rc[3];
-            cc_circle c;
-            double dt = 0.0;
+            dw_call call;
+            int rc[3], s;
             char what[96];
-            cc_circle live[DW_MAX_CIRCLES];
-            int ids[DW_MAX_CIRCLES], n_live = sim_get(ref, ids, live, DW_MAX_CIRCLES);
-            if (kind == CALL_ADD && (n_live >= def.max_circles || !place(&sc, ref, -1, step > 0 && rng_unit(&sc.rng) < 0.25, &c)))
+            if (!next_call(&sc, ref, step, q == calls, def.max_circles, &call))
                 continue;
-            if (kind == CALL_REMOVE || kind == CALL_SET) {
-                if (n_live == 0)
-                    continue;
-                id = ids[rng_int(&sc.rng, n_live)];
-                if (kind == CALL_SET && !place(&sc, ref, id, rng_unit(&sc.rng) < 0.25, &c))
-                    continue;
-            }
-            if (kind == CALL_STEP)
-                dt = sc.T * rng_log(&sc.rng, 1e-3, 0.5);
-            if (dw_trace && kind != CALL_STEP)
+            if (dw_trace && call.kind != CALL_STEP) {
+                cc_circle live[DW_MAX_CIRCLES];
+                int ids[DW_MAX_CIRCLES], n_live = sim_get(ref, ids, live, DW_MAX_CIRCLES);
                 for (s = 0; s < n_live; s++)
                     printf("  live %d: ((%.17g, %.17g), (%.17g, %.17g), r %.17g, m %.17g)\n", ids[s], live[s].pos.x,
                            live[s].pos.y, live[s].vel.x, live[s].vel.y, live[s].radius, live[s].mass);
-            for (s = 0; s < n_sims; s++) {
-                dw_sim *m = &sims[s];
-                m->n_events = 0;
-                if (m->w != NULL)
-                    rc[s] = kind == CALL_ADD      ? cc_world_add_circle(m->w, &c)
-                            : kind == CALL_REMOVE ? cc_world_remove_circle(m->w, id)
-                            : kind == CALL_SET    ? cc_world_set_circle(m->w, id, &c)
-                                                  : cc_world_step(m->w, dt);
-                else
-                    rc[s] = kind == CALL_ADD      ? rw_add_circle(m->r, &c)
-                            : kind == CALL_REMOVE ? rw_remove_circle(m->r, id)
-                            : kind == CALL_SET    ? rw_set_circle(m->r, id, &c)
-                                                  : rw_step(m->r, dt);
             }
+            for (s = 0; s < n_sims; s++)
+                rc[s] = sim_call(&sims[s], &call);
             out->calls++;
+            if (dw_trace && call.kind == CALL_PROPS)
+                printf("  props: e %.17g category %u mask %x sensor %d\n", call.props.restitution,
+                       (unsigned)call.props.category, (unsigned)call.props.mask, call.props.sensor);
+            if (dw_trace && call.kind == CALL_SEGMENT_PROPS)
+                printf("  segment props: e %.17g category %u mask %x\n", call.seg_props.restitution,
+                       (unsigned)call.seg_props.category, (unsigned)call.seg_props.mask);
+            if (dw_trace && step == 0 && q == 0)
+                for (s = 0; s < sc.n_seg; s++)
+                    printf("  wall %d: (%.17g, %.17g) - (%.17g, %.17g)\n", s, sc.seg[s].a.x, sc.seg[s].a.y, sc.seg[s].b.x,
+                           sc.seg[s].b.y);
             if (dw_trace)
-                printf("call %s id %d c = ((%.17g, %.17g), (%.17g, %.17g), r %.17g, m %.17g) dt %.17g -> %d; events %d/%d\n",
-                       kind == CALL_ADD ? "add" : kind == CALL_REMOVE ? "remove" : kind == CALL_SET ? "set" : "step", id,
-                       c.pos.x, c.pos.y, c.vel.x, c.vel.y, c.radius, c.mass, dt, rc[0], A->n_events, B->n_events);
-            snprintf(what, sizeof what, "scene %llu, step %d, %s", (unsigned long long)seed, step,
-                     kind == CALL_ADD ? "add" : kind == CALL_REMOVE ? "remove" : kind == CALL_SET ? "set" : "step");
-            if (kind == CALL_STEP && (rc[0] == CC_EVENT_LIMIT || rc[1] == CC_EVENT_LIMIT || (n_sims > 2 && rc[2] == CC_EVENT_LIMIT))) {
+                printf("call %s id %d c = ((%.17g, %.17g), (%.17g, %.17g), r %.17g, m %.17g) dt %.17g -> %d; events "
+                       "%d/%d, sensor events %d/%d\n",
+                       call_name[call.kind], call.id, call.c.pos.x, call.c.pos.y, call.c.vel.x, call.c.vel.y,
+                       call.c.radius, call.c.mass, call.dt, rc[0], A->n_events, B->n_events, A->n_sensed, B->n_sensed);
+            snprintf(what, sizeof what, "scene %llu, step %d, %s", (unsigned long long)seed, step, call_name[call.kind]);
+            if (call.kind == CALL_STEP &&
+                (rc[0] == CC_EVENT_LIMIT || rc[1] == CC_EVENT_LIMIT || (n_sims > 2 && rc[2] == CC_EVENT_LIMIT))) {
                 out->end = DW_END_JAMMED;
                 break;
             }
@@ -560,10 +679,15 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
             if (out->end != DW_END_DONE)
                 break;
             out->end = compare_call(&cmp, A, B, ref, what);
+            if (out->end == DW_END_DONE)
+                out->end = compare_sensors(&cmp, A, B, ref, what);
             if (dw_trace && out->end != DW_END_DONE) {
                 int e, z;
                 for (z = 0; z < 2; z++) {
                     const dw_sim *m = z == 0 ? A : B;
+                    for (e = 0; e < m->n_sensed && e < DW_LOG_MAX; e++)
+                        printf("  %s sensor event %d: (%d, %d, begin %d) t %.17g\n", m->name, e, m->sensed[e].sensor,
+                               m->sensed[e].visitor, m->sensed[e].begin, m->sensed[e].t);
                     for (e = 0; e < m->n_events && e < DW_LOG_MAX; e++)
                         printf("  %s event %d: (%d, %d, wall %d) t %.17g impulse %.17g n (%.17g, %.17g)\n", m->name, e,
                                m->log[e].e.a, m->log[e].e.b, m->log[e].e.segment, m->log[e].e.t, m->log[e].e.impulse,
@@ -572,7 +696,16 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
             }
             if (out->end == DW_END_DONE)
                 out->end = compare_states(&cmp, A, B, ref, what);
-            if (kind == CALL_STEP)
+            if (dw_trace && out->end != DW_END_DONE) {
+                cc_circle ca[DW_MAX_CIRCLES], cb[DW_MAX_CIRCLES];
+                int ia[DW_MAX_CIRCLES], na = sim_get(A, ia, ca, DW_MAX_CIRCLES), nb = sim_get(B, NULL, cb, DW_MAX_CIRCLES);
+                for (s = 0; s < na && s < nb; s++)
+                    if (memcmp(&ca[s], &cb[s], sizeof ca[s]) != 0)
+                        printf("  after: circle %d at (%.17g, %.17g) v (%.17g, %.17g) in %s, (%.17g, %.17g) v (%.17g, "
+                               "%.17g) in %s\n", ia[s], ca[s].pos.x, ca[s].pos.y, ca[s].vel.x, ca[s].vel.y, A->name,
+                               cb[s].pos.x, cb[s].pos.y, cb[s].vel.x, cb[s].vel.y, B->name);
+            }
+            if (call.kind == CALL_STEP)
                 out->steps_compared++;
             resync(ref, A);
         }

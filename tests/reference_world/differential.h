@@ -32,6 +32,7 @@ typedef enum dw_end {
 typedef struct dw_result {
     dw_end end;
     unsigned long events_compared; /* contact events matched in both */
+    unsigned long sensor_events_compared;
     unsigned long steps_compared;
     unsigned long calls;           /* API calls made on each simulator */
     double worst_dt;               /* largest |t_a - t_b| / time scale among matched events whose

@@ -97,18 +97,100 @@ static void report(rw_world *w, int a, int b, int seg, cc_vec2 point, cc_vec2 no
 static void new_call(rw_world *w)
 {
     w->doubt.tie_gap = w->doubt.graze_gap = w->doubt.slow = w->doubt.slack = HUGE_VAL;
+    w->doubt.chain = 0;
 }
 
 /* "Collapse": approaches slower than rest_speed get restitution 0. */
-static double restitution_for(const rw_world *w, double approach)
+static double mix(int rule, double a, double b)
 {
-    return approach < w->rest_speed ? 0.0 : w->restitution;
+    switch (rule) {
+    case CC_MIX_MAX: return a > b ? a : b;
+    case CC_MIX_PRODUCT: return a * b;
+    case CC_MIX_MEAN: return 0.5 * (a + b);
+    default: return a < b ? a : b;
+    }
+}
+
+/* "Restitution": the mix of the two sides' (b < 0: wall seg). */
+static double contact_restitution(const rw_world *w, int a, int b, int seg)
+{
+    return mix(w->mix, w->body[a].props.restitution,
+               b >= 0 ? w->body[b].props.restitution : w->seg_props[seg].restitution);
+}
+
+static double restitution_for(const rw_world *w, double approach, int a, int b, int seg)
+{
+    return approach < w->rest_speed ? 0.0 : contact_restitution(w, a, b, seg);
+}
+
+/* "Filters" and "Sensors": pairs that interact (impulses, push-apart, clusters). */
+static int admits(const cc_circle_props *a, uint32_t b_category, uint32_t b_mask)
+{
+    return (a->category & b_mask) != 0 && (b_category & a->mask) != 0;
+}
+
+static int interact(const rw_world *w, int a, int b)
+{
+    const cc_circle_props *pa = &w->body[a].props, *pb = &w->body[b].props;
+    return admits(pa, pb->category, pb->mask) && !pa->sensor && !pb->sensor;
+}
+
+static int wall_interacts(const rw_world *w, int a, int s)
+{
+    return admits(&w->body[a].props, w->seg_props[s].category, w->seg_props[s].mask) && !w->body[a].props.sensor;
+}
+
+/* Sensor s senses circle v. */
+static int senses(const rw_world *w, int s, int v)
+{
+    const cc_circle_props *ps = &w->body[s].props, *pv = &w->body[v].props;
+    return s != v && w->body[s].alive && w->body[v].alive && ps->sensor && !pv->sensor &&
+           admits(ps, pv->category, pv->mask);
+}
+
+static void sensor_report(rw_world *w, int s, int v, int begin)
+{
+    cc_sensor_event e;
+    w->inside[s][v] = (unsigned char)begin;
+    e.sensor = s;
+    e.visitor = v;
+    e.begin = begin;
+    e.t = w->now;
+    if (w->on_sensor != NULL)
+        w->on_sensor(&e, w->user);
+}
+
+/* Every pair's membership brought up to what the positions say now. */
+static void sensors_sync(rw_world *w)
+{
+    int s, v;
+    for (s = 0; s < w->id_end; s++)
+        for (v = 0; v < w->id_end; v++) {
+            int in = 0;
+            if (senses(w, s, v)) {
+                cc_vec2 d = v2(w->body[v].c.pos.x - w->body[s].c.pos.x, w->body[v].c.pos.y - w->body[s].c.pos.y);
+                double R = w->body[s].c.radius + w->body[v].c.radius, gap = sqrt(d.x * d.x + d.y * d.y) - R;
+                in = d.x * d.x + d.y * d.y < R * R;
+                if (fabs(gap) <= 1e-9 * R) /* touching: overlapping or not is rounding's */
+                    w->doubt.graze_gap = 0.0;
+            }
+            if (in != w->inside[s][v])
+                sensor_report(w, s, v, in);
+        }
 }
 
 static double speed_change(cc_vec2 a, cc_vec2 b)
 {
     cc_vec2 d = sub(a, b);
     return sqrt(d.x * d.x + d.y * d.y);
+}
+
+/* A contact whose normal speed is this close to 0 relative to the speeds: whether it takes an
+ * impulse is rounding's. */
+static void note_slack(rw_world *w, double vn, double speeds)
+{
+    if (speeds > 0.0 && fabs(vn) / speeds < w->doubt.slack)
+        w->doubt.slack = fabs(vn) / speeds;
 }
 
 /* One contact by itself, with the public pair functions (b < 0: wall seg). */
@@ -125,7 +207,8 @@ static int resolve_pair(rw_world *w, int a, int b, int seg)
         k.depth = ca->radius + cb->radius - sqrt(d.x * d.x + d.y * d.y);
         k.point = v2(ca->pos.x + k.normal.x * (ca->radius - 0.5 * k.depth),
                      ca->pos.y + k.normal.y * (ca->radius - 0.5 * k.depth));
-        if (cc_respond(&na, &nb, &k, restitution_for(w, -dot(sub(cb->vel, ca->vel), k.normal))) != CC_HIT)
+        note_slack(w, dot(sub(ca->vel, cb->vel), k.normal), l1(ca->vel) + l1(cb->vel));
+        if (cc_respond(&na, &nb, &k, restitution_for(w, -dot(sub(cb->vel, ca->vel), k.normal), a, b, -1)) != CC_HIT)
             return 0;
         report(w, a, b, -1, k.point, k.normal,
                isinf(ca->mass) ? cb->mass * speed_change(nb.vel, cb->vel) : ca->mass * speed_change(na.vel, ca->vel));
@@ -134,7 +217,8 @@ static int resolve_pair(rw_world *w, int a, int b, int seg)
         return 1;
     }
     k = wall_contact(ca, &w->seg[seg]);
-    if (isinf(ca->mass) || cc_respond_segment(&na, &k, restitution_for(w, dot(ca->vel, k.normal))) != CC_HIT)
+    note_slack(w, dot(ca->vel, k.normal), l1(ca->vel));
+    if (isinf(ca->mass) || cc_respond_segment(&na, &k, restitution_for(w, dot(ca->vel, k.normal), a, -1, seg)) != CC_HIT)
         return 0;
     report(w, a, -1, seg, k.point, k.normal, ca->mass * speed_change(na.vel, ca->vel));
     ca->vel = na.vel;
@@ -200,7 +284,8 @@ static void clu_gather(const rw_world *w, rw_clu *c)
             const cc_circle *q = &w->body[j].c;
             cc_vec2 d;
             int i;
-            if (!w->body[j].alive || j == c->id[from] || (isinf(k->mass) && isinf(q->mass)))
+            if (!w->body[j].alive || j == c->id[from] || (isinf(k->mass) && isinf(q->mass)) ||
+                !interact(w, c->id[from], j))
                 continue;
             d = sub(q->pos, k->pos);
             if (sqrt(d.x * d.x + d.y * d.y) - (k->radius + q->radius) > clu_tol(w, k, q->radius, q->pos, q->vel))
@@ -210,10 +295,25 @@ static void clu_gather(const rw_world *w, rw_clu *c)
         }
         for (s = 0; s < w->n_segments; s++) {
             cc_contact kk = wall_contact(k, &w->seg[s]);
+            if (!wall_interacts(w, c->id[from], s))
+                continue;
             if (-kk.depth <= clu_tol(w, k, 0.0, kk.point, v2(0.0, 0.0)))
                 clu_contact(w, c, from, -1, s, kk.normal);
         }
     }
+}
+
+/* "Restitution": a cluster takes the smallest of its contacts'. */
+static double clu_restitution(const rw_world *w, const rw_clu *c)
+{
+    double e = 1.0;
+    int i;
+    for (i = 0; i < c->nc; i++) {
+        const cc__cluster_contact *k = &c->contact[i];
+        double ek = contact_restitution(w, c->id[k->a], k->b >= 0 ? c->id[k->b] : -1, c->seg[i]);
+        e = ek < e ? ek : e;
+    }
+    return e;
 }
 
 static int still_approaching(const rw_world *w, int a, int b, int seg)
@@ -249,8 +349,8 @@ static int resolve_cluster(rw_world *w, int a, int b, int seg)
     if (c.nc <= 1)
         return resolve_pair(w, a, b, seg); /* nothing else touches: a pair impact */
     if (cc__cluster_scratch_size(c.nb, c.nc) > sizeof scratch ||
-        cc__cluster_resolve(c.body, c.nb, c.contact, c.nc, w->restitution, w->rest_speed, scratch, sizeof scratch,
-                            NULL) != CC_OK)
+        cc__cluster_resolve(c.body, c.nb, c.contact, c.nc, clu_restitution(w, &c), w->rest_speed, scratch,
+                            sizeof scratch, NULL) != CC_OK)
         return -1000; /* cannot happen for a valid cluster: the comparison will show it */
     for (i = 0; i < c.nb; i++)
         w->body[c.id[i]].c.vel = c.body[i].vel;
@@ -292,6 +392,8 @@ static void resolve(rw_world *w, int a, int b, int seg)
 static void unoverlap(rw_world *w, int a, int b, int seg)
 {
     cc_circle *ca = &w->body[a].c;
+    if (b >= 0 ? !interact(w, a, b) : !wall_interacts(w, a, seg))
+        return; /* they pass through each other */
     if (b >= 0) {
         cc_circle *cb = &w->body[b].c;
         if (isinf(ca->mass) && isinf(cb->mass))
@@ -311,18 +413,76 @@ static void unoverlap(rw_world *w, int a, int b, int seg)
     resolve(w, a, b, seg);
 }
 
-/* A circle added or set on top of others: pushed out of each, then out of the walls. */
+/* A circle added or set on top of others: pushed out of each, then out of the walls. A push
+ * that leaves either circle overlapping a third makes the outcome depend on the order of the
+ * pushes, which is the world's to choose: a doubt. */
+/* How many interacting circles (circle `but` aside) and walls circle i overlaps. */
+static int overlaps_except(const rw_world *w, int i, int but)
+{
+    int k, n = 0;
+    for (k = 0; k < w->id_end; k++)
+        n += k != i && k != but && w->body[k].alive && interact(w, i, k) &&
+             cc_detect_static(&w->body[i].c, &w->body[k].c, NULL) == CC_OVERLAP;
+    for (k = 0; k < w->n_segments; k++)
+        n += wall_interacts(w, i, k) && !isinf(w->body[i].c.mass) && wall_contact(&w->body[i].c, &w->seg[k]).depth > 0.0;
+    return n;
+}
+
+static int overlaps_count(const rw_world *w, int i) { return overlaps_except(w, i, -1); }
+
+/* Pushes i out of circle j (or wall seg when j < 0) and resolves the contact; a push that leaves
+ * either overlapping a third makes the outcome depend on the order of the pushes, which is the
+ * world's to choose: a doubt. */
+static void push(rw_world *w, int i, int j, int seg)
+{
+    cc_vec2 before = w->body[i].c.pos;
+    unoverlap(w, i, j, seg);
+    if (w->body[i].c.pos.x != before.x || w->body[i].c.pos.y != before.y)
+        if (overlaps_except(w, i, j) > 0 || (j >= 0 && overlaps_except(w, j, i) > 0))
+            w->doubt.chain = 1;
+}
+
 static void settle(rw_world *w, int id)
 {
     int j, s;
+    if (overlaps_count(w, id) > 1) /* two overlaps to begin with: their order decides too */
+        w->doubt.chain = 1;
     for (j = 0; j < w->id_end; j++)
         if (j != id && w->body[j].alive)
-            unoverlap(w, id, j, -1);
+            push(w, id, j, -1);
     for (s = 0; s < w->n_segments; s++)
-        unoverlap(w, id, -1, s);
+        push(w, id, -1, s);
+    sensors_sync(w);
 }
 
-int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, void *user)
+/* "Cells": 1.0625 times the largest diameter of a movable circle (sensors excepted), or of any
+ * circle when none is movable, or def.cell_size when larger; made at each rebuild. */
+static void cell_size(rw_world *w)
+{
+    double dmax = 0.0, any = 0.0;
+    int i;
+    for (i = 0; i < w->id_end; i++) {
+        const cc_circle *c = &w->body[i].c;
+        if (!w->body[i].alive)
+            continue;
+        if (!isinf(c->mass) && !w->body[i].props.sensor && 2.0 * c->radius > dmax)
+            dmax = 2.0 * c->radius;
+        if (2.0 * c->radius > any)
+            any = 2.0 * c->radius;
+    }
+    if (dmax == 0.0)
+        dmax = any > 0.0 ? any : 1.0;
+    w->cs = dmax * 1.0625 > w->cell_hint ? dmax * 1.0625 : w->cell_hint;
+}
+
+/* "Overlaps": a circle wider than the cells makes everything wait for the next step's rebuild. */
+static void defer_if_wide(rw_world *w, const cc_circle *c)
+{
+    if (!w->dirty && w->use_grid && 2.0 * c->radius * 1.0625 > w->cs)
+        w->dirty = 1;
+}
+
+int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, rw_sensor_fn on_sensor, void *user)
 {
     if (w == NULL || def == NULL || def->mode != CC_MODE_EXACT || def->max_circles < 0 ||
         def->max_circles > RW_MAX_CIRCLES || def->max_segments < 0 || def->max_segments > RW_MAX_SEGMENTS ||
@@ -336,7 +496,12 @@ int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, void *us
     w->max_segments = def->max_segments;
     w->dirty = 1; /* "Before the first step ... this happens for all circles at the next step" */
     w->on_event = on_event;
+    w->on_sensor = on_sensor;
     w->user = user;
+    w->mix = def->restitution_mix;
+    w->use_grid = def->max_circles > 32;
+    w->cell_hint = def->cell_size;
+    w->rolling_decel = def->rolling_decel;
     return CC_OK;
 }
 
@@ -351,6 +516,13 @@ int rw_add_circle(rw_world *w, const cc_circle *c)
     id = w->free_top > 0 ? w->free_ids[--w->free_top] : w->id_end++; /* "Ids": last removed first */
     w->body[id].c = *c;
     w->body[id].alive = 1;
+    w->body[id].props.struct_size = sizeof w->body[id].props;
+    w->body[id].props.restitution = w->restitution;
+    w->body[id].props.rolling_decel = w->rolling_decel;
+    w->body[id].props.category = 1u;
+    w->body[id].props.mask = 0xFFFFFFFFu;
+    w->body[id].props.sensor = 0;
+    defer_if_wide(w, c);
     if (!w->dirty) {
         w->busy = 1;
         settle(w, id);
@@ -368,6 +540,11 @@ int rw_remove_circle(rw_world *w, int id)
         return CC_ERR_NOT_FOUND;
     w->body[id].alive = 0;
     w->free_ids[w->free_top++] = id;
+    {   /* "a circle removed gets none: its overlaps are forgotten" */
+        int j;
+        for (j = 0; j < RW_MAX_CIRCLES; j++)
+            w->inside[id][j] = w->inside[j][id] = 0;
+    }
     return CC_OK;
 }
 
@@ -379,6 +556,7 @@ int rw_set_circle(rw_world *w, int id, const cc_circle *c)
     if (id < 0 || id >= w->id_end || !w->body[id].alive)
         return CC_ERR_NOT_FOUND;
     w->body[id].c = *c;
+    defer_if_wide(w, c);
     if (!w->dirty) {
         w->busy = 1;
         settle(w, id);
@@ -394,6 +572,10 @@ int rw_add_segment(rw_world *w, const cc_segment *s)
     if (w->n_segments >= w->max_segments)
         return CC_ERR_FULL;
     w->seg[w->n_segments] = *s;
+    w->seg_props[w->n_segments].struct_size = sizeof w->seg_props[0];
+    w->seg_props[w->n_segments].restitution = w->restitution;
+    w->seg_props[w->n_segments].category = 1u;
+    w->seg_props[w->n_segments].mask = 0xFFFFFFFFu;
     w->dirty = 1; /* "after a wall ... was added, this happens for all circles at the next step" */
     return w->n_segments++;
 }
@@ -417,11 +599,58 @@ int rw_get_circles(const rw_world *w, int *ids, cc_circle *out, int capacity)
     return k;
 }
 
+int rw_set_circle_props(rw_world *w, int id, const cc_circle_props *p)
+{
+    cc_circle_props *q;
+    int j, n_sensors = 0;
+    new_call(w);
+    if (w->busy || p == NULL || !(p->restitution >= 0.0 && p->restitution <= 1.0) ||
+        !(p->rolling_decel >= 0.0 && isfinite(p->rolling_decel)))
+        return CC_ERR_INVALID;
+    if (id < 0 || id >= w->id_end || !w->body[id].alive)
+        return CC_ERR_NOT_FOUND;
+    q = &w->body[id].props;
+    for (j = 0; j < w->id_end; j++)
+        n_sensors += w->body[j].alive && w->body[j].props.sensor;
+    if (p->sensor && !q->sensor && n_sensors == CC_MAX_SENSORS)
+        return CC_ERR_FULL;
+    w->busy = 1;
+    if (!p->sensor != !q->sensor) /* a sensor that stops, a visitor that becomes one: ends */
+        for (j = 0; j < w->id_end; j++) {
+            if (w->inside[id][j])
+                sensor_report(w, id, j, 0);
+            if (w->inside[j][id])
+                sensor_report(w, j, id, 0);
+        }
+    q->restitution = p->restitution;
+    q->rolling_decel = p->rolling_decel;
+    q->category = p->category;
+    q->mask = p->mask;
+    q->sensor = p->sensor != 0;
+    if (!w->dirty) /* as set: overlaps that now interact are pushed apart, sensors brought up */
+        settle(w, id);
+    w->busy = 0;
+    return CC_OK;
+}
+
+int rw_set_segment_props(rw_world *w, int id, const cc_segment_props *p)
+{
+    new_call(w);
+    if (w->busy || p == NULL || !(p->restitution >= 0.0 && p->restitution <= 1.0))
+        return CC_ERR_INVALID;
+    if (id < 0 || id >= w->n_segments)
+        return CC_ERR_NOT_FOUND;
+    w->seg_props[id] = *p;
+    w->dirty = 1; /* as the world: everything looked at again at the next step */
+    return CC_OK;
+}
+
 /* ---- stepping ---------------------------------------------------------------------------- */
 
 typedef struct rw_cand {
     double t; /* absolute */
     int a, b, seg;
+    int sensor; /* a sensor pair's begin or end: a is the sensor, b the visitor */
 } rw_cand;
 
 static void advance_all(rw_world *w, double t)
@@ -437,7 +666,7 @@ static void advance_all(rw_world *w, double t)
 }
 
 /* Offers a candidate event; keeps the earliest and the next distinct time behind it. */
-static void offer(rw_cand *best, double *second, double t, int a, int b, int seg)
+static void offer(rw_cand *best, double *second, double t, int a, int b, int seg, int sensor)
 {
     if (t < best->t) {
         *second = best->t;
@@ -445,8 +674,44 @@ static void offer(rw_cand *best, double *second, double t, int a, int b, int seg
         best->a = a;
         best->b = b;
         best->seg = seg;
+        best->sensor = sensor;
     } else if (t < *second) {
         *second = t;
+    }
+}
+
+/* "Sensors": when sensor s and visitor v next begin or stop overlapping, from now (absolute;
+ * +INF for never). Within 2^-40 of the numbers involved, the boundary is rounding's and the
+ * membership decides, as in the world. */
+static double sensor_next(const rw_world *w, int s, int v)
+{
+    const cc_circle *a = &w->body[s].c, *b = &w->body[v].c;
+    cc_vec2 dp = sub(b->pos, a->pos), dv = sub(b->vel, a->vel);
+    double R = a->radius + b->radius, d = sqrt(dot(dp, dp)), vv = dot(dv, dv), bb = dot(dp, dv);
+    double tol = 0x1p-40 * (l1(a->pos) + l1(b->pos) + R + (l1(a->vel) + l1(b->vel)) * fabs(w->now));
+    if (w->inside[s][v]) {
+        double h, q, disc, c, t;
+        if (d - R > tol)
+            return w->now;
+        if (vv == 0.0)
+            return HUGE_VAL;
+        h = fabs(dp.x * dv.y - dp.y * dv.x);
+        q = sqrt(vv) * R;
+        if (!(q > h))
+            return w->now;
+        disc = (q - h) * (q + h);
+        c = (d - R) * (d + R);
+        t = bb <= 0.0 ? (-bb + sqrt(disc)) / vv : -c / (bb + sqrt(disc));
+        return t > 0.0 ? w->now + t : w->now;
+    } else {
+        cc_contact k;
+        if (d - R < -tol)
+            return w->now;
+        switch (cc_sweep(a, b, HUGE_VAL, &k)) {
+        case CC_HIT: return w->now + k.t;
+        case CC_OVERLAP: return bb < 0.0 ? w->now : HUGE_VAL;
+        default: return HUGE_VAL;
+        }
     }
 }
 
@@ -458,6 +723,7 @@ static rw_cand next_event(rw_world *w, double t_end)
     int i, j, s;
     best.t = HUGE_VAL;
     best.a = best.b = best.seg = -1;
+    best.sensor = 0;
     for (i = 0; i < w->id_end; i++) {
         const cc_circle *ci = &w->body[i].c;
         if (!w->body[i].alive)
@@ -468,7 +734,15 @@ static rw_cand next_event(rw_world *w, double t_end)
             cc_vec2 dp, dv;
             double vv, vn, speeds;
             int r;
-            if (!w->body[j].alive || (isinf(ci->mass) && isinf(cj->mass)) || (at_rest(ci) && at_rest(cj)))
+            if (!w->body[j].alive || (at_rest(ci) && at_rest(cj)))
+                continue;
+            if (senses(w, i, j) || senses(w, j, i)) {
+                int sn = senses(w, i, j) ? i : j;
+                double ts = sensor_next(w, sn, sn == i ? j : i);
+                if (ts <= t_end)
+                    offer(&best, &second, ts, sn, sn == i ? j : i, -1, 1);
+            }
+            if ((isinf(ci->mass) && isinf(cj->mass)) || !interact(w, i, j))
                 continue;
             dp = sub(cj->pos, ci->pos);
             dv = sub(cj->vel, ci->vel);
@@ -491,7 +765,7 @@ static rw_cand next_event(rw_world *w, double t_end)
             if (vn > 0.0 && fabs(vn / approach_threshold(w, speeds) - 1.0) < w->doubt.slow)
                 w->doubt.slow = fabs(vn / approach_threshold(w, speeds) - 1.0);
             if (approaching(w, vn, speeds))
-                offer(&best, &second, w->now + k.t, i, j, -1);
+                offer(&best, &second, w->now + k.t, i, j, -1, 0);
         }
         if (isinf(ci->mass) || at_rest(ci))
             continue; /* "Immovable": kinematic circles pass through walls */
@@ -502,6 +776,8 @@ static rw_cand next_event(rw_world *w, double t_end)
             int r;
             /* the path's box, grown by twice the radius, misses the wall's: cc_sweep_segment would
              * say so, at more cost */
+            if (!wall_interacts(w, i, s))
+                continue;
             if (fmax(g->a.x, g->b.x) < fmin(ci->pos.x, ex) - m || fmin(g->a.x, g->b.x) > fmax(ci->pos.x, ex) + m ||
                 fmax(g->a.y, g->b.y) < fmin(ci->pos.y, ey) - m || fmin(g->a.y, g->b.y) > fmax(ci->pos.y, ey) + m)
                 continue;
@@ -522,7 +798,7 @@ static rw_cand next_event(rw_world *w, double t_end)
             if (vn > 0.0 && fabs(vn / thr - 1.0) < w->doubt.slow)
                 w->doubt.slow = fabs(vn / thr - 1.0);
             if (approaching(w, vn, l1(ci->vel)))
-                offer(&best, &second, w->now + k.t, i, -1, s);
+                offer(&best, &second, w->now + k.t, i, -1, s, 0);
         }
     }
     if (second < HUGE_VAL && (second - best.t) / (fabs(best.t) + w->time_scale) < w->doubt.tie_gap)
@@ -541,15 +817,30 @@ int rw_step(rw_world *w, double dt)
     t_end = w->now + dt;
     w->busy = 1;
     if (w->dirty) { /* one pass over every overlap, each pair by itself */
+        cell_size(w);
+        for (i = 0; i < w->id_end; i++) { /* a circle in two overlaps: the order of the pushes decides */
+            if (!w->body[i].alive)
+                continue;
+            if (overlaps_count(w, i) > 1)
+                w->doubt.chain = 1;
+            for (j = i + 1; j < w->id_end; j++) /* touching pairs: overlapping or not is rounding's */
+                if (w->body[j].alive && interact(w, i, j)) {
+                    cc_vec2 d = sub(w->body[j].c.pos, w->body[i].c.pos);
+                    double R = w->body[i].c.radius + w->body[j].c.radius;
+                    if (fabs(sqrt(dot(d, d)) - R) <= 1e-9 * R)
+                        w->doubt.graze_gap = 0.0;
+                }
+        }
         for (i = 0; i < w->id_end; i++) {
             if (!w->body[i].alive)
                 continue;
             for (j = i + 1; j < w->id_end; j++)
                 if (w->body[j].alive)
-                    unoverlap(w, i, j, -1);
+                    push(w, i, j, -1);
             for (s = 0; s < w->n_segments; s++)
-                unoverlap(w, i, -1, s);
+                push(w, i, -1, s);
         }
+        sensors_sync(w);
         w->dirty = 0;
     }
     for (done = 0;; done++) {
@@ -561,7 +852,10 @@ int rw_step(rw_world *w, double dt)
             return CC_EVENT_LIMIT;
         }
         advance_all(w, e.t > w->now ? e.t : w->now);
-        (void)resolve_cluster(w, e.a, e.b, e.seg);
+        if (e.sensor)
+            sensor_report(w, e.a, e.b, !w->inside[e.a][e.b]);
+        else
+            (void)resolve_cluster(w, e.a, e.b, e.seg);
     }
     advance_all(w, t_end);
     w->busy = 0;

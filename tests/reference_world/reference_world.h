@@ -24,8 +24,9 @@
 #define RW_MAX_SEGMENTS 64
 
 typedef struct rw_body {
-    cc_circle c; /* state at the world's current time */
+    cc_circle c;          /* state at the world's current time */
     int alive;
+    cc_circle_props props; /* "Per-body properties" (sensor: 0 or 1) */
 } rw_body;
 
 /* What rounding decides in a call (add, set, remove, step): the smallest of each, over every
@@ -38,9 +39,11 @@ typedef struct rw_doubt {
     double slow;      /* |ratio - 1| of an approach speed to its rounding threshold (+INF) */
     double slack;     /* |normal speed| / summed speeds of a contact in a cluster: near 0,
                          whether it takes an impulse is rounding's (+INF) */
+    int chain;        /* a push-apart made a new overlap: the order of the pushes decides (0/1) */
 } rw_doubt;
 
 typedef void (*rw_event_fn)(const cc_contact_event *e, void *user);
+typedef void (*rw_sensor_fn)(const cc_sensor_event *e, void *user);
 
 typedef struct rw_world {
     double restitution, rest_speed, now;
@@ -50,7 +53,14 @@ typedef struct rw_world {
     rw_body body[RW_MAX_CIRCLES];
     int free_ids[RW_MAX_CIRCLES];
     cc_segment seg[RW_MAX_SEGMENTS];
+    cc_segment_props seg_props[RW_MAX_SEGMENTS];
+    int mix;
+    double rolling_decel;
+    int use_grid;     /* "a world with max_circles <= 32 tests all pairs and has no grid" */
+    double cs, cell_hint; /* "Cells": the cell size of the last rebuild, def.cell_size */
+    unsigned char inside[RW_MAX_CIRCLES][RW_MAX_CIRCLES]; /* [sensor][visitor]: they overlap */
     rw_event_fn on_event;
+    rw_sensor_fn on_sensor;
     void *user;
     double time_scale; /* the scene's time scale, for relative tie gaps (set by the caller) */
     rw_doubt doubt;    /* of the current (or last) call */
@@ -59,12 +69,15 @@ typedef struct rw_world {
 
 /* def as for cc_world_init (mode must be EXACT; the callback fields are ignored: events go to
  * on_event). Returns CC_OK or CC_ERR_INVALID. */
-int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, void *user);
+int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, rw_sensor_fn on_sensor, void *user);
 int rw_add_circle(rw_world *w, const cc_circle *c);
 int rw_remove_circle(rw_world *w, int id);
 int rw_set_circle(rw_world *w, int id, const cc_circle *c);
 int rw_add_segment(rw_world *w, const cc_segment *s);
 int rw_step(rw_world *w, double dt);
 int rw_get_circles(const rw_world *w, int *ids, cc_circle *out, int capacity);
+/* Whole structs (struct_size ignored); the same codes as the world's. */
+int rw_set_circle_props(rw_world *w, int id, const cc_circle_props *p);
+int rw_set_segment_props(rw_world *w, int id, const cc_segment_props *p);
 
 #endif
