@@ -314,10 +314,12 @@ static int cmd_scaling(const opts *o)
  * with features absent, present but idle, and far away. */
 static int cmd_features(const opts *o)
 {
-    enum { BASE, SEG_CAP, FAR_WALLS, FAR_IMMOVABLE, FAR_BIG, N_VARIANTS };
+    enum { BASE, SEG_CAP, FAR_WALLS, FAR_IMMOVABLE, FAR_BIG, PROPS_ALL, SENSORS, HALF_FILTERED, N_VARIANTS };
     static const char *names[N_VARIANTS] = {"no walls, max_segments = 0", "max_segments = 4, no walls",
                                             "4 walls 1000 boxes away", "16 immovable circles far away",
-                                            "1 immovable circle r = 2 far away"};
+                                            "1 immovable circle r = 2 far away",
+                                            "every circle with props (filters)", "16 sensors in the gas",
+                                            "half the pairs filtered"};
     bench_scene s;
     int n = o->quick ? 2000 : 10000, reps = o->quick ? 3 : 9, v, k;
     double t_run = 5.0, base = 0.0;
@@ -356,6 +358,34 @@ static int cmd_features(const opts *o)
                     cc_world_add_circle(b.w, &c);
                 }
             }
+            if (var == PROPS_ALL || var == HALF_FILTERED) {
+                /* PROPS_ALL: filters that admit every pair (the featured prediction path, the
+                 * same collisions); HALF_FILTERED: two families that pass through each other */
+                for (i = 0; i < s.n; i++) {
+                    cc_circle_props p;
+                    p.struct_size = sizeof p;
+                    cc_world_get_circle_props(b.w, i, &p);
+                    p.category = var == PROPS_ALL ? 3u : 1u << (i & 1);
+                    p.mask = var == PROPS_ALL ? 0xFFFFFFFFu : 1u << (i & 1);
+                    cc_world_set_circle_props(b.w, i, &p);
+                }
+            }
+            if (var == SENSORS) /* 16 pockets of radius r_typ spread over the gas: same collisions */
+                for (i = 0; i < 16; i++) {
+                    cc_circle c;
+                    cc_circle_props p;
+                    int id;
+                    memset(&c, 0, sizeof c);
+                    c.pos.x = L * (0.125 + 0.25 * (i % 4));
+                    c.pos.y = L * (0.125 + 0.25 * (i / 4));
+                    c.radius = s.r_typ;
+                    c.mass = INFINITY;
+                    id = cc_world_add_circle(b.w, &c);
+                    p.struct_size = sizeof p;
+                    cc_world_get_circle_props(b.w, id, &p);
+                    p.sensor = 1;
+                    cc_world_set_circle_props(b.w, id, &p);
+                }
             step(b.w, 1.0 / 60);
             t0 = bench_now();
             for (i = 0; i < (int)(t_run * 60); i++)
@@ -385,7 +415,8 @@ static int cmd_features(const opts *o)
         med = bench_median(cost[v], (size_t)reps);
         (void)base;
         printf("%-34s %14.2f %10.2f - %-9.2f %12llu %8.3f %10.3f%s\n", names[v], med, lo, hi,
-               (unsigned long long)coll[v], rat[v], rat_min[v], coll[v] == coll[BASE] ? "" : "  (different collisions!)");
+               (unsigned long long)coll[v], rat[v], rat_min[v],
+               coll[v] == coll[BASE] ? "" : v == HALF_FILTERED ? "  (other collisions: by design)" : "  (different collisions!)");
         if (csv != NULL)
             fprintf(csv, "\"%s\",%.6g,%.6g,%.6g,%llu,%.6g,%.6g\n", names[v], med, lo, hi, (unsigned long long)coll[v],
                     rat[v], rat_min[v]);
@@ -395,6 +426,12 @@ static int cmd_features(const opts *o)
             bench_figure("feature_cost_far_immovable", rat_min[v]);
         if (v == SEG_CAP)
             bench_figure("feature_cost_segment_capacity", rat_min[v]);
+        if (v == PROPS_ALL)
+            bench_figure("feature_cost_props_all", rat_min[v]);
+        if (v == SENSORS)
+            bench_figure("feature_cost_16_sensors", rat_min[v]);
+        if (v == HALF_FILTERED)
+            bench_figure("feature_cost_half_filtered", rat_min[v]);
         free(cost[v]);
     }
     bench_scene_free(&s);
