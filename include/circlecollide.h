@@ -479,6 +479,55 @@ CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props 
 CC_API int cc_world_get_segment_props(const cc_world *w, int id, cc_segment_props *out);
 CC_API int cc_world_set_segment_props(cc_world *w, int id, const cc_segment_props *p);
 
+/* ---- Queries and state (1.1) ------------------------------------------------------------------ */
+/* Questions put to the world as it is at the current time, everything held still. They read the
+ * world only (and may be called from a callback); their cost follows the region they cover, not
+ * the size of the world (in EXACT, between steps; in SWEPT and DISCRETE, and before a world's
+ * first step, every circle is looked at). Positions are those cc_world_get_circle gives. */
+
+typedef struct cc_cast_hit {
+    int circle;     /* id of the circle hit, or -1 */
+    int segment;    /* id of the wall hit, or -1 */
+    double t;       /* in [0, 1]: the cast circle's centre is at p + d * t at contact */
+    cc_vec2 point;  /* contact point */
+    cc_vec2 normal; /* unit normal from the cast circle towards what it hit */
+} cc_cast_hit;
+
+/* The first circle or wall that a circle of `radius` (finite, >= 0; 0 is a ray) moving from p to
+ * p + d touches: the earliest t in [0, 1] at which it touches one while approaching it, found
+ * with cc_sweep's solver (cc_sweep_segment's for walls) and its accuracy. Only circles and walls
+ * whose category meets `mask` (category & mask != 0); sensors are skipped. Returns CC_HIT (out
+ * filled), CC_MISS (out untouched), CC_OVERLAP when the cast circle already overlaps something at
+ * p (out names it, t = 0, the normal from p towards its centre or nearest point), or
+ * CC_ERR_INVALID (NULL, a non-finite p or d, radius < 0 or not finite). Equal times go to the
+ * lowest circle id, then to the lowest wall id; an overlap comes before a touch at t = 0. A ray
+ * (radius 0) hits a wall where it crosses it, a circle where it enters it. The cue ball's aiming
+ * line: cast it, then the object ball moves off along out->normal. */
+CC_API int cc_world_cast_circle(const cc_world *w, cc_vec2 p, double radius, cc_vec2 d, uint32_t mask,
+                                cc_cast_hit *out);
+
+/* The ids of the circles that overlap the disc of centre c and `radius` (their distance less
+ * than the sum of the radii; radius 0: the circles whose interior holds c), whose category meets
+ * `mask`, sensors included, written in increasing id order into ids[0..capacity). Returns how
+ * many there are (which may exceed capacity), or CC_ERR_INVALID (NULL w, c or radius not finite,
+ * radius < 0, capacity < 0, ids NULL with capacity > 0). */
+CC_API int cc_world_query_circle(const cc_world *w, cc_vec2 c, double radius, uint32_t mask, int *ids,
+                                 int capacity);
+
+/* The same for the circles that meet the closed box [lo, hi] (the closed disc against the box,
+ * exactly: a circle whose distance from the box equals its radius counts). lo <= hi in both
+ * coordinates, all finite, else CC_ERR_INVALID. */
+CC_API int cc_world_query_box(const cc_world *w, cc_vec2 lo, cc_vec2 hi, uint32_t mask, int *ids, int capacity);
+
+/* A 64-bit hash of the simulation state: the world time, every live circle's id, position and
+ * velocity (as cc_world_get_circle gives them), radius, mass and properties, its sensor overlaps,
+ * every wall and its properties, and the def's settings (not the callbacks or user pointer).
+ * Equal states give equal hashes wherever the memory lives (after a memcpy, on another world fed
+ * the same calls, on another machine with IEEE doubles); a state differing in one bit of any of
+ * these gives another hash (with the probability of a good 64-bit hash). For replays and
+ * lock-step networking: compare hashes to find the step where two runs part. 0 for NULL. */
+CC_API uint64_t cc_world_hash(const cc_world *w);
+
 /* ---- Single precision: the same contract in float ------------------------------------------ */
 /* Field for field the double types with float, and each function the double one's twin (same
  * codes, same outputs left untouched, same semantics), computed in float only: for

@@ -15,4 +15,7 @@ list(APPEND CC_WORLD_SOURCES
   world/discrete.c  # DISCRETE stepping
   world/props.c     # per-body properties: the API, filters, restitution mixing
   world/sensor.c    # sensor circles: overlaps begun and ended
+  world/query.c     # overlap queries: the circles in a disc or a box
+  world/cast.c      # casts: the first circle or wall a moving circle or ray touches
+  world/hash.c      # the state hash
 )

@@ -157,6 +157,14 @@ static inline void cc__advance_body(cc__body *b, double t)
         b->t = t;
     }
 }
+/* Where circle j (storage index) is at time t: its lazy state carried forward, without
+ * changing it (for the readers: queries, sensors, the hash). */
+static inline void cc__body_pos(const cc_world *w, int j, double t, double *x, double *y)
+{
+    const cc__body *b = &CC__CARR(w, cc__body, off_body)[j];
+    *x = cc__bx(b, t);
+    *y = cc__by(b, t);
+}
 /* Grid cell size for the current circles (>= largest movable diameter). */
 double cc__world_cell_size(const cc_world *w);
 

@@ -1,0 +1,176 @@
+/* Casts (issue 14): the first circle or wall a circle (or a ray) moving from p to p + d touches,
+ * with the world held still at its current time. The path is walked in pieces about a cell long
+ * (longer for a wide cast), each piece's cells searched through the grid (region.h), and the walk
+ * stops once a hit lies before the end of the piece searched: a circle hit at t lies within the
+ * cast radius plus its own of the path's point at t, so it is found with the piece holding t. */
+#include "region.h"
+
+#include "precision_double.h"
+#include "helpers.inc"
+#include "solver.inc"
+#include "precision_end.h"
+
+typedef struct cc__cast {
+    const cc_world *w;
+    cc_vec2 p, d;
+    double r;
+    uint32_t mask;
+    /* the best so far: (t, touch, wall, id) smallest first */
+    double t;
+    int touch, wall, id;
+    cc_vec2 point, normal;
+} cc__cast;
+
+/* Whether (t, touch, wall, id) comes before the best so far. */
+static int cc__earlier(const cc__cast *c, double t, int touch, int wall, int id)
+{
+    if (t != c->t)
+        return t < c->t;
+    if (touch != c->touch)
+        return touch < c->touch; /* an overlap before a touch at t = 0 */
+    if (wall != c->wall)
+        return wall < c->wall; /* circles before walls */
+    return id < c->id;
+}
+
+static void cc__offer(cc__cast *c, double t, int touch, int wall, int id, cc_vec2 n)
+{
+    if (!cc__earlier(c, t, touch, wall, id))
+        return;
+    c->t = t;
+    c->touch = touch;
+    c->wall = wall;
+    c->id = id;
+    c->normal = n;
+    c->point = cc__advance(cc__advance(c->p, c->d, t), n, c->r);
+}
+
+static void cc__cast_visit(void *ctx, int j)
+{
+    cc__cast *c = (cc__cast *)ctx;
+    const cc_world *w = c->w;
+    const cc__body *b = &CC__CARR(w, cc__body, off_body)[j];
+    cc_vec2 q, dp, n;
+    double t, R = c->r + b->r;
+    int eL, r, id;
+    if (!cc__category_meets(w, j, c->mask) || CC__CARR(w, cc__props, off_props)[j].sensor >= 0)
+        return;
+    cc__body_pos(w, j, w->now, &q.x, &q.y);
+    /* relative frame, as cc_sweep: the circle at q - p, the cast moving at d against it */
+    dp = cc__diff(c->p, q, &eL);
+    r = cc__sweep_rel(dp, cc__v(-c->d.x, -c->d.y), eL ? R * 0.5 : R, eL, 0, 1.0, &t, &n);
+    if (r != CC_HIT && r != CC_OVERLAP)
+        return;
+    id = CC__CARR(w, int32_t, off_idx2id)[j];
+    cc__offer(c, r == CC_OVERLAP ? 0.0 : t, r == CC_HIT, 0, id, n);
+}
+
+/* A ray (radius 0) against wall s: where it crosses it. Relative to p, so that a cast far from
+ * the origin costs no accuracy. */
+static int cc__ray_wall(const cc__cast *c, const cc_segment *s, double *t_out, cc_vec2 *n_out)
+{
+    cc_vec2 a = cc__sub(s->a, c->p), b = cc__sub(s->b, c->p), u = cc__sub(b, a), d = c->d;
+    double den = cc__cross(d, u), t, v;
+    if (d.x == 0.0 && d.y == 0.0)
+        return CC_MISS; /* a ray that does not move touches nothing it is not already on */
+    if (den == 0.0) {
+        /* parallel (or a point): only a wall on the ray's own line is met, at its nearer end */
+        double ta, tb, dd = cc__dot(d, d);
+        if (cc__cross(d, a) != 0.0)
+            return CC_MISS;
+        ta = cc__dot(a, d) / dd;
+        tb = cc__dot(b, d) / dd;
+        t = ta < tb ? ta : tb;
+        if ((ta < 0.0) != (tb < 0.0) || ta == 0.0 || tb == 0.0)
+            t = 0.0; /* it starts on the wall */
+        if (!(t >= 0.0 && t <= 1.0))
+            return CC_MISS;
+        *t_out = t;
+        *n_out = cc__unit(d);
+        return CC_HIT;
+    }
+    t = cc__cross(a, u) / den;
+    v = cc__cross(a, d) / den; /* where along the wall: 0 at its end a, 1 at b */
+    if (!(t >= 0.0 && t <= 1.0 && v >= 0.0 && v <= 1.0))
+        return CC_MISS;
+    *t_out = t;
+    *n_out = cc__unit(cc__v(-u.y, u.x));
+    if (cc__dot(*n_out, d) < 0.0)
+        *n_out = cc__v(-n_out->x, -n_out->y); /* towards the wall, from the ray's side */
+    return CC_HIT;
+}
+
+static void cc__cast_walls(cc__cast *c)
+{
+    const cc_world *w = c->w;
+    const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
+    const cc__segment_props *sp = CC__CARR(w, cc__segment_props, off_segprops);
+    int s;
+    for (s = 0; s < w->n_segments; s++) {
+        cc_vec2 n;
+        double t;
+        int r;
+        if (!(sp[s].category & c->mask))
+            continue;
+        if (c->r > 0.0) {
+            cc_circle k;
+            cc_contact hit;
+            k.pos = c->p;
+            k.vel = c->d;
+            k.radius = c->r;
+            k.mass = 1.0;
+            r = cc_sweep_segment(&k, &seg[s], 1.0, &hit);
+            t = hit.t;
+            n = hit.normal;
+        } else {
+            r = cc__ray_wall(c, &seg[s], &t, &n);
+        }
+        if (r == CC_HIT || r == CC_OVERLAP)
+            cc__offer(c, r == CC_OVERLAP ? 0.0 : t, r == CC_HIT, 1, s, n);
+    }
+}
+
+CC_API int cc_world_cast_circle(const cc_world *w, cc_vec2 p, double radius, cc_vec2 d, uint32_t mask,
+                                cc_cast_hit *out)
+{
+    cc__cast c;
+    double len, piece;
+    long k, pieces;
+    if (w == NULL || w->magic != CC__WORLD_MAGIC || out == NULL || !cc__vec_ok(p) || !cc__vec_ok(d) ||
+        !(radius >= 0.0) || !isfinite(radius))
+        return CC_ERR_INVALID;
+    memset(&c, 0, sizeof c);
+    c.w = w;
+    c.p = p;
+    c.d = d;
+    c.r = radius;
+    c.mask = mask;
+    c.t = HUGE_VAL;
+    c.touch = c.wall = 1;
+    c.id = INT32_MAX;
+    cc__cast_walls(&c);
+    /* pieces a cell long (or the cast's radius, when wider), at most one per circle */
+    len = cc__length(d);
+    piece = cc__grid_current(w) ? (w->cs > radius ? w->cs : radius) : HUGE_VAL;
+    pieces = len / piece < (double)w->id_end ? (long)ceil(len / piece) : 1;
+    if (pieces < 1)
+        pieces = 1;
+    for (k = 0; k < pieces; k++) {
+        double t0 = (double)k / (double)pieces, t1 = (double)(k + 1) / (double)pieces;
+        cc_vec2 a = cc__advance(p, d, t0), b = cc__advance(p, d, t1);
+        /* the piece's box grown by the radius, and by far more than the rounding of a and b */
+        double g = radius + 0x1p-30 * (fabs(a.x) + fabs(a.y) + fabs(b.x) + fabs(b.y) + radius);
+        cc__visit_region(w, (a.x < b.x ? a.x : b.x) - g, (a.y < b.y ? a.y : b.y) - g, (a.x < b.x ? b.x : a.x) + g,
+                         (a.y < b.y ? b.y : a.y) + g, cc__cast_visit, &c);
+        if (c.t < t1)
+            break; /* every circle touched before t1 has been looked at */
+    }
+    if (c.t > 1.0)
+        return CC_MISS;
+    out->circle = c.wall ? -1 : c.id;
+    out->segment = c.wall ? c.id : -1;
+    out->t = c.t;
+    out->point = c.point;
+    out->normal = c.normal;
+    return c.touch ? CC_HIT : CC_OVERLAP;
+}

@@ -1,0 +1,74 @@
+/* The state hash (issue 14): 64 bits over everything that decides what the world does next, in a
+ * fixed order (ids ascending, then walls, then the settings), each double by its bits, so that two
+ * worlds in the same state hash alike wherever their memory lives, and a state one bit apart
+ * hashes otherwise. The mixing is a multiply-xorshift over 64-bit words (the finaliser of
+ * SplitMix64 after each word), written here. */
+#include "world_internal.h"
+
+#include <string.h>
+
+static uint64_t cc__mix(uint64_t h, uint64_t v)
+{
+    h ^= v + UINT64_C(0x9E3779B97F4A7C15) + (h << 6) + (h >> 2);
+    h ^= h >> 30;
+    h *= UINT64_C(0xBF58476D1CE4E5B9);
+    h ^= h >> 27;
+    h *= UINT64_C(0x94D049BB133111EB);
+    h ^= h >> 31;
+    return h;
+}
+
+static uint64_t cc__mix_double(uint64_t h, double x)
+{
+    uint64_t v;
+    memcpy(&v, &x, sizeof v);
+    return cc__mix(h, v);
+}
+
+static uint64_t cc__mix_vec(uint64_t h, cc_vec2 p) { return cc__mix_double(cc__mix_double(h, p.x), p.y); }
+
+CC_API uint64_t cc_world_hash(const cc_world *w)
+{
+    const cc__cold *C;
+    const cc__props *P;
+    const cc_segment *seg;
+    const cc__segment_props *sp;
+    const int32_t *id2idx;
+    uint64_t h = UINT64_C(0x63636861736831); /* "cchash1" */
+    int id, s;
+    if (w == NULL || w->magic != CC__WORLD_MAGIC)
+        return 0;
+    C = CC__CARR(w, cc__cold, off_cold);
+    P = CC__CARR(w, cc__props, off_props);
+    seg = CC__CARR(w, cc_segment, off_seg);
+    sp = CC__CARR(w, cc__segment_props, off_segprops);
+    id2idx = CC__CARR(w, int32_t, off_id2idx);
+    h = cc__mix_double(h, w->now);
+    for (id = 0; id < w->id_end; id++) {
+        int k = id2idx[id];
+        cc_circle c;
+        if (!(C[k].flags & CC__ALIVE))
+            continue;
+        (void)cc_world_get_circle(w, id, &c); /* the state the API shows */
+        h = cc__mix(h, (uint64_t)id);
+        h = cc__mix_vec(cc__mix_vec(h, c.pos), c.vel);
+        h = cc__mix_double(cc__mix_double(h, c.radius), c.mass);
+        h = cc__mix_double(cc__mix_double(h, P[k].restitution), P[k].decel);
+        h = cc__mix(h, (uint64_t)P[k].category << 32 | P[k].mask);
+        h = cc__mix(h, P[k].sensor >= 0 ? (uint64_t)P[k].sensor + 1u : 0u);
+        h = cc__mix(h, P[k].inside);
+    }
+    h = cc__mix(h, (uint64_t)w->n_segments);
+    for (s = 0; s < w->n_segments; s++) {
+        h = cc__mix_vec(cc__mix_vec(h, seg[s].a), seg[s].b);
+        h = cc__mix_double(h, sp[s].restitution);
+        h = cc__mix(h, (uint64_t)sp[s].category << 32 | sp[s].mask);
+    }
+    /* the settings that decide what happens next (not the callbacks or the user pointer) */
+    h = cc__mix(h, (uint64_t)w->mode << 32 | (uint32_t)w->mix);
+    h = cc__mix(h, (uint64_t)(uint32_t)w->max_circles << 32 | (uint32_t)w->max_segments);
+    h = cc__mix_double(cc__mix_double(h, w->restitution), w->rest_speed);
+    h = cc__mix_double(cc__mix_double(h, w->cell_hint), w->rolling_decel);
+    h = cc__mix(h, w->max_events);
+    return h;
+}

@@ -1,0 +1,139 @@
+/* The overlap queries (issue 14): the circles that overlap a disc or meet a box, found through
+ * the grid (region.h), tested exactly, and written in increasing id order. */
+#include "region.h"
+
+#include "precision_double.h"
+#include "helpers.inc"
+#include "precision_end.h"
+
+typedef struct cc__query {
+    const cc_world *w;
+    double cx, cy, r;         /* a disc, or (box) */
+    double x0, y0, x1, y1;    /* a box */
+    int box;
+    uint32_t mask;
+    int *ids, capacity, count;
+} cc__query;
+
+/* The lowest `capacity` ids seen so far, kept as a max-heap in ids[0..min(count, capacity)). */
+static void cc__keep(cc__query *q, int id)
+{
+    int n = q->count < q->capacity ? q->count : q->capacity, k;
+    q->count++;
+    if (q->capacity == 0)
+        return;
+    if (n == q->capacity) {
+        if (id >= q->ids[0])
+            return;
+        k = 0; /* replace the largest, sift it down */
+        for (;;) {
+            int c = 2 * k + 1, big;
+            if (c >= n)
+                break;
+            big = c + 1 < n && q->ids[c + 1] > q->ids[c] ? c + 1 : c;
+            if (q->ids[big] <= id)
+                break;
+            q->ids[k] = q->ids[big];
+            k = big;
+        }
+        q->ids[k] = id;
+        return;
+    }
+    for (k = n; k > 0 && q->ids[(k - 1) / 2] < id; k = (k - 1) / 2) /* sift up */
+        q->ids[k] = q->ids[(k - 1) / 2];
+    q->ids[k] = id;
+}
+
+/* The kept ids in increasing order (heapsort of the max-heap in place). */
+static void cc__sort_kept(cc__query *q)
+{
+    int n = q->count < q->capacity ? q->count : q->capacity, end;
+    for (end = n - 1; end > 0; end--) {
+        int top = q->ids[0], last = q->ids[end], k = 0;
+        q->ids[end] = top;
+        for (;;) {
+            int c = 2 * k + 1, big;
+            if (c >= end)
+                break;
+            big = c + 1 < end && q->ids[c + 1] > q->ids[c] ? c + 1 : c;
+            if (q->ids[big] <= last)
+                break;
+            q->ids[k] = q->ids[big];
+            k = big;
+        }
+        q->ids[k] = last;
+    }
+}
+
+static void cc__query_visit(void *ctx, int j)
+{
+    cc__query *q = (cc__query *)ctx;
+    const cc_world *w = q->w;
+    const cc__body *b = &CC__CARR(w, cc__body, off_body)[j];
+    double x, y, dx, dy;
+    if (!cc__category_meets(w, j, q->mask))
+        return;
+    cc__body_pos(w, j, w->now, &x, &y);
+    if (q->box) {
+        /* the centre's distance from the closed box, against the (closed) disc */
+        dx = x < q->x0 ? q->x0 - x : x > q->x1 ? x - q->x1 : 0.0;
+        dy = y < q->y0 ? q->y0 - y : y > q->y1 ? y - q->y1 : 0.0;
+        if (dx > b->r || dy > b->r || dx * dx + dy * dy > b->r * b->r)
+            return;
+    } else {
+        double R = q->r + b->r;
+        dx = x - q->cx;
+        dy = y - q->cy;
+        if (!(dx * dx + dy * dy < R * R))
+            return;
+    }
+    cc__keep(q, CC__CARR(w, int32_t, off_idx2id)[j]);
+}
+
+static int cc__query_run(cc__query *q)
+{
+    double g = q->box ? 0.0 : q->r;
+    cc__visit_region(q->w, q->x0 - g, q->y0 - g, q->x1 + g, q->y1 + g, cc__query_visit, q);
+    cc__sort_kept(q);
+    return q->count;
+}
+
+static int cc__query_ok(const cc_world *w, const int *ids, int capacity)
+{
+    return w != NULL && w->magic == CC__WORLD_MAGIC && capacity >= 0 && (ids != NULL || capacity == 0);
+}
+
+CC_API int cc_world_query_circle(const cc_world *w, cc_vec2 c, double radius, uint32_t mask, int *ids, int capacity)
+{
+    cc__query q;
+    if (!cc__query_ok(w, ids, capacity) || !isfinite(c.x) || !isfinite(c.y) || !(radius >= 0.0) || !isfinite(radius))
+        return CC_ERR_INVALID;
+    memset(&q, 0, sizeof q);
+    q.w = w;
+    q.cx = q.x0 = q.x1 = c.x;
+    q.cy = q.y0 = q.y1 = c.y;
+    q.r = radius;
+    q.mask = mask;
+    q.ids = ids;
+    q.capacity = capacity;
+    return cc__query_run(&q);
+}
+
+CC_API int cc_world_query_box(const cc_world *w, cc_vec2 lo, cc_vec2 hi, uint32_t mask, int *ids, int capacity)
+{
+    cc__query q;
+    if (!cc__query_ok(w, ids, capacity) || !isfinite(lo.x) || !isfinite(lo.y) || !isfinite(hi.x) ||
+        !isfinite(hi.y) || !(lo.x <= hi.x) || !(lo.y <= hi.y))
+        return CC_ERR_INVALID;
+    memset(&q, 0, sizeof q);
+    q.w = w;
+    q.box = 1;
+    q.x0 = lo.x;
+    q.y0 = lo.y;
+    q.x1 = hi.x;
+    q.y1 = hi.y;
+    q.mask = mask;
+    q.ids = ids;
+    q.capacity = capacity;
+    return cc__query_run(&q);
+}
