@@ -188,7 +188,8 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           memory of the same size and used from there. It keeps no pointer to the caller's
  *           defs, circles or segments (it copies them). About 200 bytes per circle (one 64-byte
  *           line of hot state, the predicted event, queue and grid entries, and 40 bytes of
- *           properties that only a world using them reads) plus 48 per wall;
+ *           properties that only a world using them reads) plus about 200 per wall (the wall, its
+ *           properties and its place in the walls' tree);
  *           EXACT adds one block of at most 15 KB for simultaneous impacts (see below).
  * Ids       cc_world_add_circle returns the most recently removed id when there is one (removed
  *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid
@@ -210,7 +211,9 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           max_circles, so the plane is unbounded): a circle is tested against the circles of
  *           the 3x3 cells around its own, and the cost per event is O(log N). Only what a scene
  *           holds costs anything: a world with max_circles <= 32 tests all pairs and has no
- *           grid; a world without walls tests no walls; circles at rest predict nothing (what
+ *           grid; a world without walls tests no walls, and walls are kept in a tree of their
+ *           boxes (built at the step after walls were added) so that a circle looks only at the
+ *           walls near its path; circles at rest predict nothing (what
  *           moves towards them finds them); immovable circles are obstacles, never queued.
  * Cells     The cell size is 1.0625 times the largest diameter of a movable circle (or of any
  *           circle when none is movable), or def.cell_size when that is larger. It is

@@ -37,9 +37,10 @@ static void test_size_follows_capacity(void)
     d.max_segments = 10;
     s1000w = cc_world_size(&d);
     TEST_ASSERT_TRUE(s1000 > s64);
-    /* ten walls of 4 doubles each (320 bytes) and their properties (restitution, category and
-     * mask: 16 bytes each, 160), each array rounded up to 16 */
-    TEST_ASSERT_EQUAL_UINT64(s1000 + 320 + 160, s1000w);
+    /* ten walls of 4 doubles each (320 bytes), their properties (restitution, category and
+     * mask: 16 bytes each, 160), and the walls' tree: a box of 8 doubles each (640), up to 20
+     * nodes of 4 doubles and 2 ints (800) and the walls' order (40 bytes, 48 once rounded up) */
+    TEST_ASSERT_EQUAL_UINT64(s1000 + 320 + 160 + 640 + 800 + 48, s1000w);
     /* per circle: below 256 bytes (the body is one 64-byte line, plus event, cell, heap, hash) */
     TEST_ASSERT_TRUE(s1000 / 1000 < 256);
 }

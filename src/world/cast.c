@@ -4,6 +4,7 @@
  * stops once a hit lies before the end of the piece searched: a circle hit at t lies within the
  * cast radius plus its own of the path's point at t, so it is found with the piece holding t. */
 #include "region.h"
+#include "walls.h"
 
 #include "precision_double.h"
 #include "helpers.inc"
@@ -105,8 +106,13 @@ static void cc__cast_walls(cc__cast *c)
     const cc_world *w = c->w;
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
     const cc__segment_props *sp = CC__CARR(w, cc__segment_props, off_segprops);
+    cc_vec2 e = cc__advance(c->p, c->d, 1.0);
+    double g = c->r + 0x1p-30 * (fabs(c->p.x) + fabs(c->p.y) + fabs(e.x) + fabs(e.y) + c->r);
+    cc__wall_walk walk;
     int s;
-    for (s = 0; s < w->n_segments; s++) {
+    cc__walls_begin(w, &walk, (c->p.x < e.x ? c->p.x : e.x) - g, (c->p.y < e.y ? c->p.y : e.y) - g,
+                    (c->p.x < e.x ? e.x : c->p.x) + g, (c->p.y < e.y ? e.y : c->p.y) + g);
+    while ((s = cc__walls_next(w, &walk)) >= 0) {
         cc_vec2 n;
         double t;
         int r;

@@ -4,6 +4,7 @@
  * is used in EXACT between events; otherwise (other modes, or before the first step) every
  * circle is checked. */
 #include "world_internal.h"
+#include "walls.h"
 
 #include "precision_double.h"
 #include "helpers.inc"
@@ -30,6 +31,7 @@ int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit vis
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
     const double kx = cc__bx(&B[k], w->now), ky = cc__by(&B[k], w->now), kr = B[k].r, reach = kr + tol;
+    cc__wall_walk walk;
     int j, s, n = 0;
     if (w->mode != CC_MODE_EXACT || w->dirty || !w->use_grid || (C[k].flags & CC__LARGE)) {
         for (j = 0; j < w->id_end; j++)
@@ -66,10 +68,11 @@ int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit vis
                 n++;
             }
     }
-    for (s = 0; s < w->n_segments; s++) {
+    cc__walls_begin(w, &walk, kx - reach, ky - reach, kx + reach, ky + reach);
+    while ((s = cc__walls_next(w, &walk)) >= 0) {
         const cc_segment *g = &seg[s];
         cc_vec2 p = cc__v(kx, ky), q;
-        /* most walls are far: the segment's box grown by the reach rules them out cheaply */
+        /* the tree's boxes are grown a little: the segment's own box grown by the reach decides */
         if (kx + reach < (g->a.x < g->b.x ? g->a.x : g->b.x) || kx - reach > (g->a.x > g->b.x ? g->a.x : g->b.x) ||
             ky + reach < (g->a.y < g->b.y ? g->a.y : g->b.y) || ky - reach > (g->a.y > g->b.y ? g->a.y : g->b.y))
             continue;

@@ -8,6 +8,7 @@
  * rejects before the exact tests: about what a plain cell-list step costs). */
 #include "world_internal.h"
 #include "scan.h"
+#include "walls.h"
 
 /* Circles whose position an overlap pass changed are filed again under their new cell. */
 static void cc__refile_moved(cc_world *w, int only)
@@ -46,24 +47,21 @@ static void cc__unoverlap_pair(cc_world *w, int i, int j)
         (void)cc__world_unoverlap(w, i, j, -1);
 }
 
-/* Circle i against every wall whose box its own reaches; wb: the pass's boxes, or NULL. */
-static void cc__unoverlap_walls(cc_world *w, int i, const cc__walls_boxed *wb)
+/* Circle i against every wall whose box its own reaches (the walls' tree finds them). */
+static void cc__unoverlap_walls(cc_world *w, int i)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[i];
+    cc__wall_walk walk;
     double reach;
-    int s, nb = wb != NULL ? wb->n : 0;
+    int s;
     if (w->n_segments == 0)
         return;
     /* the wall's box and the circle's, each grown by 2^-30 of its numbers, are disjoint: the
      * closest point on the wall lies in the wall's box (to rounding, far inside the margins),
      * so the circle cannot reach it */
     reach = b->r + 0x1p-30 * (b->r + fabs(b->px) + fabs(b->py));
-    for (s = 0; s < w->n_segments; s++) {
-        cc__wall_box tmp;
-        const cc__wall_box *k = cc__wall_box_at(w, wb, nb, s, &tmp);
-        /* | not ||: one branch, taken for most walls */
-        if ((k->gx0 - b->px > reach) | (b->px - k->gx1 > reach) | (k->gy0 - b->py > reach) | (b->py - k->gy1 > reach))
-            continue;
+    cc__walls_begin(w, &walk, b->px - reach, b->py - reach, b->px + reach, b->py + reach);
+    while ((s = cc__walls_next(w, &walk)) >= 0) {
         if (isinf(CC__CARR(w, cc__cold, off_cold)[i].m))
             return; /* immovable: walls do not hold it */
         w->stats.pairs_tested++; /* as SWEPT counts walls: those the box test lets through */
@@ -96,7 +94,7 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
                 if (j != i)
                     cc__unoverlap_pair(w, i, j);
     }
-    cc__unoverlap_walls(w, i, NULL);
+    cc__unoverlap_walls(w, i);
 }
 
 /* SWEPT and DISCRETE, every step: every circle carried to now and filed in the cleared grid as
@@ -137,12 +135,10 @@ static void cc__file_all(cc_world *w)
  * cells ahead, (x+1, y) and the three of row y+1. */
 static void cc__unoverlap_cells(cc_world *w)
 {
-    cc__walls_boxed wb;
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
     uint32_t s;
     int i, j;
-    cc__box_walls(w, &wb);
     for (s = 0; s <= w->slot_mask; s++)
         for (i = slot[s]; i >= 0; i = B[i].next) {
             int32_t cx = B[i].cx, cy = B[i].cy, x;
@@ -159,7 +155,7 @@ static void cc__unoverlap_cells(cc_world *w)
                     for (sl = cc__row_slot(w, x, cy + 1, sl, x == cx - 1), j = slot[sl]; j >= 0; j = B[j].next)
                         if (B[j].cx == x && B[j].cy == cy + 1)
                             cc__unoverlap_pair(w, i, j);
-            cc__unoverlap_walls(w, i, &wb);
+            cc__unoverlap_walls(w, i);
         }
 }
 
@@ -171,6 +167,8 @@ void cc__rebuild(cc_world *w)
     int i, j;
     w->cs = cc__world_cell_size(w);
     w->inv_cs = 1.0 / w->cs;
+    if (w->wall_tree_n != w->n_segments)
+        cc__walls_build(w); /* walls were added: the tree is made again */
     w->heap_n = 0;
     if (w->use_grid)
         cc__grid_clear(w);

@@ -6,6 +6,7 @@
  * are searched up to min(hit, crossing) and only when their box is within reach. Bodies at rest
  * predict nothing: whatever moves towards them holds the event. */
 #include "world_internal.h"
+#include "walls.h"
 
 #include "precision_double.h"
 #include "helpers.inc"
@@ -125,6 +126,7 @@ static void cc__try_segments(cc_world *w, int i, const cc__body *bi, double t_cr
     double x0 = -HUGE_VAL, x1 = HUGE_VAL, y0 = -HUGE_VAL, y1 = HUGE_VAL;
     cc_circle c;
     cc_contact k;
+    cc__wall_walk walk;
     int s;
     c.pos.x = bi->px;
     c.pos.y = bi->py;
@@ -139,12 +141,10 @@ static void cc__try_segments(cc_world *w, int i, const cc__body *bi, double t_cr
         y0 = (ey < bi->py ? ey : bi->py) - g;
         y1 = (ey < bi->py ? bi->py : ey) + g;
     }
-    for (s = 0; s < w->n_segments; s++) {
+    cc__walls_begin(w, &walk, x0, y0, x1, y1);
+    while ((s = cc__walls_next(w, &walk)) >= 0) {
         const cc_segment *q = &seg[s];
         int r;
-        if ((q->a.x < x0 && q->b.x < x0) || (q->a.x > x1 && q->b.x > x1) || (q->a.y < y0 && q->b.y < y0) ||
-            (q->a.y > y1 && q->b.y > y1))
-            continue;
         if ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__wall_interacts(w, i, s))
             continue;
         w->stats.pairs_tested++;

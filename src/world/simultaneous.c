@@ -5,6 +5,7 @@
  * so they join the same cluster. An impact that touches nothing else stays a pair impact
  * (resolve.c), bit for bit as before. */
 #include "world_internal.h"
+#include "walls.h"
 #include "world/cluster.h"
 
 /* Capacities: a cluster holds up to CC__CLU_BODIES bodies (the 15-ball rack and its cue ball
@@ -211,6 +212,7 @@ int cc__cluster_pair_reach(const cc_world *w, int a, int b, double *reach_a, dou
     double vmax = va > vb ? va : vb, rmax = w->cs, common;
     double ax = cc__bx(&B[a], w->now), ay = cc__by(&B[a], w->now), bx = cc__bx(&B[b], w->now),
            by = cc__by(&B[b], w->now), ga, gb, g, x0, x1, y0, y1;
+    cc__wall_walk walk;
     int s;
     rmax = B[a].r > rmax ? B[a].r : rmax;
     rmax = B[b].r > rmax ? B[b].r : rmax;
@@ -225,7 +227,8 @@ int cc__cluster_pair_reach(const cc_world *w, int a, int b, double *reach_a, dou
     x1 = (ax < bx ? bx : ax) + g;
     y0 = (ay < by ? ay : by) - g;
     y1 = (ay < by ? by : ay) + g;
-    for (s = 0; s < w->n_segments; s++) {
+    cc__walls_begin(w, &walk, x0, y0, x1, y1);
+    while ((s = cc__walls_next(w, &walk)) >= 0) {
         const cc_segment *q = &seg[s];
         if ((q->a.x < x0 && q->b.x < x0) || (q->a.x > x1 && q->b.x > x1) || (q->a.y < y0 && q->b.y < y0) ||
             (q->a.y > y1 && q->b.y > y1))

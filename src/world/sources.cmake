@@ -18,4 +18,5 @@ list(APPEND CC_WORLD_SOURCES
   world/query.c     # overlap queries: the circles in a disc or a box
   world/cast.c      # casts: the first circle or wall a moving circle or ray touches
   world/hash.c      # the state hash
+  world/walls.c     # the walls' tree: the walls near a circle, a path or a box
 )

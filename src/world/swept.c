@@ -11,6 +11,7 @@
  * covers (cc__sweeps_from). */
 #include "world_internal.h"
 #include "scan.h"
+#include "walls.h"
 
 #include "precision_double.h"
 #include "helpers.inc"
@@ -63,14 +64,15 @@ static void cc__pair(cc_world *w, int i, int j, double dt)
     cc__offer(w, j, w->now + t, CC__EV_CIRCLE, i);
 }
 
-static void cc__walls(cc_world *w, int i, double dt, const cc__walls_boxed *wb)
+static void cc__walls(cc_world *w, int i, double dt)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[i];
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
     double x0, x1, y0, y1;
     cc_circle c;
     cc_contact k;
-    int s, first = 1, nb = wb != NULL ? wb->n : 0;
+    cc__wall_walk walk;
+    int s, first = 1;
     if (w->n_segments == 0 || (b->vx == 0.0 && b->vy == 0.0))
         return;
     /* the path's box grown by the radius */
@@ -78,11 +80,11 @@ static void cc__walls(cc_world *w, int i, double dt, const cc__walls_boxed *wb)
     x1 = (b->px < b->px + b->vx * dt ? b->px + b->vx * dt : b->px) + b->r;
     y0 = (b->py < b->py + b->vy * dt ? b->py : b->py + b->vy * dt) - b->r;
     y1 = (b->py < b->py + b->vy * dt ? b->py + b->vy * dt : b->py) + b->r;
-    for (s = 0; s < w->n_segments; s++) {
-        cc__wall_box tmp;
-        const cc__wall_box *g = cc__wall_box_at(w, wb, nb, s, &tmp);
-        if ((g->x0 > x1) | (g->x1 < x0) | (g->y0 > y1) | (g->y1 < y0)) /* one branch, mostly taken */
-            continue;
+    cc__walls_begin(w, &walk, x0, y0, x1, y1);
+    while ((s = cc__walls_next(w, &walk)) >= 0) {
+        cc__wall_box g = s < w->wall_tree_n ? cc__wall_boxes(w)[s] : cc__wall_box_of(&seg[s]);
+        if ((g.x0 > x1) | (g.x1 < x0) | (g.y0 > y1) | (g.y1 < y0))
+            continue; /* the tree's boxes are grown: the exact box decides, as before the tree */
         if ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__wall_interacts(w, i, s))
             continue;
         if (first) { /* the body's cold part only when a wall is near */
@@ -116,7 +118,7 @@ static double cc__travel(const cc__body *b, double dt) { return (fabs(b->vx) + f
 static int cc__sweeps_from(double di, int i, double dj, int j) { return dj < di || (dj == di && j < i); }
 
 /* Body i (in the grid) against the large circles, the circles it sweeps and the walls. */
-static void cc__sweep_body(cc_world *w, int i, double dt, double rmax, double slow, const cc__walls_boxed *wb)
+static void cc__sweep_body(cc_world *w, int i, double dt, double rmax, double slow)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
@@ -127,7 +129,7 @@ static void cc__sweep_body(cc_world *w, int i, double dt, double rmax, double sl
     int j;
     for (j = w->large_head; j >= 0; j = B[j].next)
         cc__pair(w, i, j, dt);
-    cc__walls(w, i, dt, wb);
+    cc__walls(w, i, dt);
     if (di <= slow) {
         /* the slow after it in its own cell and in the four cells ahead: (x+1, y), row y+1 */
         for (j = b->next; j >= 0; j = B[j].next)
@@ -190,17 +192,15 @@ static void cc__find_impacts(cc_world *w, double dt)
                     cc__pair(w, i, j, dt);
         for (i = 0; i < w->id_end; i++)
             if (C[i].flags & CC__ALIVE)
-                cc__walls(w, i, dt, NULL);
+                cc__walls(w, i, dt);
     } else {
         uint32_t s;
-        cc__walls_boxed wb;
         double slow = 0.5 * (w->cs - 2.0 * rmax) * (1.0 - 0x1p-10);
-        cc__box_walls(w, &wb);
         /* in the order of the slots, not of storage: what a body looks at was mostly looked at
          * just before (see cc__unoverlap_cells); the outcome does not depend on the order */
         for (s = 0; s <= w->slot_mask; s++)
             for (i = slot[s]; i >= 0; i = B[i].next)
-                cc__sweep_body(w, i, dt, rmax, slow, &wb); /* (large circles are immovable: no walls) */
+                cc__sweep_body(w, i, dt, rmax, slow); /* (large circles are immovable: no walls) */
     }
     for (i = 0; i < w->id_end; i++)
         if (ev[i].kind != CC__EV_NONE)

@@ -2,6 +2,7 @@
  * from the caller's buffer, validation, ids, and the circle/segment accessors. Stepping lives
  * in exact.c, swept.c and discrete.c. */
 #include "world_internal.h"
+#include "walls.h"
 
 #include "precision_double.h"
 #include "helpers.inc"
@@ -100,7 +101,7 @@ static uint32_t cc__slots(int max_circles)
 static size_t cc__layout(const cc_world_def *d, cc_world *w)
 {
     size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
-    size_t offs[14], sizes[14];
+    size_t offs[17], sizes[17];
     int clu_b, clu_c;
     int k;
     sizes[0] = n * sizeof(cc__body);
@@ -117,7 +118,10 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[11] = cc__cluster_block(d->max_circles, d->mode, &clu_b, &clu_c); /* EXACT's clusters */
     sizes[12] = n * sizeof(cc__props);
     sizes[13] = (size_t)d->max_segments * sizeof(cc__segment_props);
-    for (k = 0; k < 14; k++) {
+    sizes[14] = (size_t)d->max_segments * sizeof(cc__wall_box);        /* the walls' tree */
+    sizes[15] = 2 * (size_t)d->max_segments * sizeof(cc__wall_node);
+    sizes[16] = (size_t)d->max_segments * sizeof(int32_t);
+    for (k = 0; k < 17; k++) {
         offs[k] = off;
         off += cc__align16(sizes[k]);
     }
@@ -136,6 +140,9 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_clu = offs[11];
         w->off_props = offs[12];
         w->off_segprops = offs[13];
+        w->off_wallbox = offs[14];
+        w->off_wallnode = offs[15];
+        w->off_wallorder = offs[16];
         w->clu_bodies = clu_b;
         w->clu_contacts = clu_c;
     }

@@ -132,6 +132,8 @@ struct cc_world {
     size_t off_id2idx, off_idx2id; /* a circle's id <-> its storage index (see sort.c) */
     size_t off_clu;                /* EXACT: the simultaneous-impact cluster (simultaneous.c) */
     size_t off_props, off_segprops; /* per-body properties (props.c) */
+    size_t off_wallbox, off_wallnode, off_wallorder; /* the walls' tree (walls.c) */
+    int wall_tree_n;                /* walls in the tree; those after it are looked at one by one */
     int clu_bodies, clu_contacts;  /* its capacities; 0 when the world has none */
 };
 

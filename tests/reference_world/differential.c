@@ -132,7 +132,7 @@ typedef struct dw_scene {
     double vmax;         /* largest speed */
     double L, T, J;      /* scales: length, time, impulse */
     int props;           /* the scene sets per-body properties */
-    cc_segment seg[8];
+    cc_segment seg[64];
     int n_seg;
 } dw_scene;
 
@@ -566,7 +566,7 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
     cc_world_def_init(&def);
     small = pairing == DW_SMALL_VS_GRID || rng_unit(&sc.rng) < 0.3;
     def.max_circles = small ? 32 : 33 + rng_int(&sc.rng, DW_MAX_CIRCLES - 33);
-    def.max_segments = 8;
+    def.max_segments = 64;
     def.max_events = 3000; /* a jam (see DW_END_JAMMED) costs little */
     def.restitution = rng_unit(&sc.rng) < 0.5 ? 1.0 : rng_range(&sc.rng, 0.3, 1.0);
     def.rest_speed = rng_unit(&sc.rng) < 0.3 ? sc.vmax * 1e-3 : 0.0;
@@ -580,14 +580,17 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
         sc.seg[3] = (cc_segment){{-b, b}, {-b, -b}};
         sc.n_seg = 4;
     }
-    for (k = rng_int(&sc.rng, 5); k > 0; k--) { /* walls inside: short segments and points */
+    /* walls inside: a few short segments and points, or (a maze, for the walls' tree) up to 56
+     * segments of a tenth of the box */
+    for (k = rng_unit(&sc.rng) < 0.2 ? 20 + rng_int(&sc.rng, 37) : rng_int(&sc.rng, 5); k > 0; k--) {
         cc_segment s;
+        double len = k > 4 ? 0.1 : 0.3;
         s.a.x = rng_range(&sc.rng, -sc.box, sc.box);
         s.a.y = rng_range(&sc.rng, -sc.box, sc.box);
         s.b = s.a;
         if (rng_unit(&sc.rng) < 0.7) {
-            s.b.x += rng_range(&sc.rng, -0.3, 0.3) * sc.box;
-            s.b.y += rng_range(&sc.rng, -0.3, 0.3) * sc.box;
+            s.b.x += rng_range(&sc.rng, -len, len) * sc.box;
+            s.b.y += rng_range(&sc.rng, -len, len) * sc.box;
         }
         sc.seg[sc.n_seg++] = s;
     }
