@@ -109,7 +109,7 @@ def main():
     scaling = rows(os.path.join(res, "scaling.csv"))
     features = rows(os.path.join(res, "features.csv"))
     figs = {}
-    for name in ("pair.txt", "headline.txt", "features.txt", "scaling.txt", "matrix.txt"):
+    for name in ("pair.txt", "headline.txt", "features.txt", "scaling.txt", "matrix.txt", "casts.txt", "walls.txt"):
         figs.update(figures(read(os.path.join(res, name))))
     peers = peers_table(read(os.path.join(res, "peers.txt")))
     if matrix:
@@ -289,7 +289,9 @@ def main():
         w("")
         w("The same freely expanding gas (no wall is ever reached within the run; N = 10000, phi = 0.3, EXACT, "
           "5 simulated seconds), with features absent, allowed but unused, or present far away. Every "
-          "variant processes exactly the same collisions (the column shows it). The variants run in rotating "
+          "variant but the last processes exactly the same collisions (the column shows it): filters that "
+          "admit every pair and sensors change no impulse; half the pairs filtered is other physics, shown "
+          "for the cost per collision of a filtered world. The variants run in rotating "
           "order within each round. *Ratio* = median over rounds of the per-round cost ratio to the first row; "
           "*ratio of minima* = fastest run over fastest baseline run, the steadier estimate on a noisy "
           "machine (noise only adds time), and the one the `feature_cost_*` figures report.")
@@ -302,12 +304,31 @@ def main():
                                                         g(r["ratio_of_minima"])))
         w("")
 
+    # ---- queries and walls (bench_queries)
+    casts, walls = read(os.path.join(res, "casts.txt")), read(os.path.join(res, "walls.txt"))
+    if casts or walls:
+        w("## 6. Queries and walls at scale")
+        w("")
+        w("Casts (a ray, and a circle of radius 0.5, over 10 units) and disc queries (radius 1.5) from random "
+          "points of the gas at area fraction 0.3, in worlds of growing N at the same density: the cost "
+          "follows the region a query covers, not the world (ratios to N = 1000). Then the gas of 10,000 "
+          "circles with its 4 walls, and with 10,000 short walls on rings outside the box that no circle "
+          "reaches (the same collisions): the walls' tree keeps the cost per collision close.")
+        w("")
+        for text in (casts, walls):
+            if text:
+                w("```")
+                w("\n".join(l for l in text.splitlines() if not l.startswith("figure ")))
+                w("```")
+                w("")
+
     w("## How to reproduce")
     w("")
     w("```sh")
     w("bench/run.sh            # everything, writes this page (several minutes)")
     w("bench/run.sh --quick    # the headline figures only, under a minute once built")
     w("build-bench/bench/bench_pair --help; build-bench/bench/bench_world matrix|headline|scaling|features")
+    w("build-bench/bench/bench_queries casts|walls")
     w("```")
     w("")
     with open(os.path.join(docs, "BENCHMARKS.md"), "w") as f:

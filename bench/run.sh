@@ -34,7 +34,7 @@ fi
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$b2d" \
   -DCC_BUILD_TESTS=OFF -DCC_BUILD_DEMO=OFF >>"$log" 2>&1
-targets=(bench_pair bench_world)
+targets=(bench_pair bench_world bench_queries)
 grep -q "Box2D found" "$log" && targets+=(bench_box2d_world)
 cmake --build "$build" -j"$jobs" --target "${targets[@]}" >>"$log" 2>&1 || {
   tail -30 "$log" >&2
@@ -47,6 +47,8 @@ if [ $quick = 1 ]; then
   "$bin/bench_pair" --pairs 200000 --rounds 9 --no-reference | tee -a "$log" | grep '^figure '
   "$bin/bench_world" headline --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_world" features --quick | tee -a "$log" | grep '^figure '
+  "$bin/bench_queries" casts --quick | tee -a "$log" | grep '^figure '
+  "$bin/bench_queries" walls --quick | tee -a "$log" | grep '^figure '
   echo "(details: $log)"
   exit 0
 fi
@@ -81,6 +83,9 @@ echo "== world: scaling" | tee -a "$log"
 "$bin/bench_world" scaling --csv "$out/scaling.csv" | tee "$out/scaling.txt"
 echo "== world: features a scene does not use" | tee -a "$log"
 "$bin/bench_world" features --csv "$out/features.csv" | tee "$out/features.txt"
+echo "== queries and walls at scale" | tee -a "$log"
+"$bin/bench_queries" casts | tee "$out/casts.txt"
+"$bin/bench_queries" walls | tee "$out/walls.txt"
 
 echo "== peers on the gas (n = 1000, phi = 0.3)" | tee -a "$log"
 dt=0.016666666666666666

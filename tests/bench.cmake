@@ -11,5 +11,9 @@ if(CC_BUILD_BENCH AND EXISTS ${PROJECT_SOURCE_DIR}/bench/CMakeLists.txt)
     add_test(NAME bench_world_tiny COMMAND bench_world peer 300 0.3 0.5 0.016666666666666666)
     set_tests_properties(bench_world_tiny PROPERTIES LABELS bench TIMEOUT 120
       PASS_REGULAR_EXPRESSION "tunnelling=0 escaped=0 ")
+    # the walls benchmark at its quick size: it runs, and the two variants have the same collisions
+    add_test(NAME bench_queries_walls_tiny COMMAND bench_queries walls --quick)
+    set_tests_properties(bench_queries_walls_tiny PROPERTIES LABELS bench TIMEOUT 120
+      PASS_REGULAR_EXPRESSION "walls_10000_cost_ratio " FAIL_REGULAR_EXPRESSION "different collisions")
   endif()
 endif()

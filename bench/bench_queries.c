@@ -1,0 +1,186 @@
+/* Queries and walls at scale (issue 14): what a cast and an overlap query cost as the world grows
+ * at the same local density (the cost should follow the region, not the world), and what many
+ * walls cost a gas that touches few of them (the walls' tree). Ratios against the smallest world
+ * or the 4-wall gas measured in the same run; medians and spreads over rounds.
+ *
+ *   bench_queries casts [--quick]   cast and query cost, N = 1e3 .. 1e6 (1e5 with --quick)
+ *   bench_queries walls [--quick]   the gas with 4 walls and with 10,000 short walls outside it */
+#include "bench_scenes.h"
+#include "bench_util.h"
+
+#include "circlecollide.h"
+
+typedef struct qworld {
+    cc_world *w;
+    void *mem;
+    double L;
+} qworld;
+
+static void make_gas(qworld *q, const bench_scene *s, int extra_walls, int rounds_of_walls)
+{
+    cc_world_def d;
+    int i;
+    cc_world_def_init(&d);
+    d.max_circles = s->n;
+    d.max_segments = 4 + extra_walls;
+    q->mem = bench_alloc(cc_world_size(&d));
+    q->w = cc_world_init(q->mem, cc_world_size(&d), &d, NULL);
+    q->L = s->x1;
+    for (i = 0; i < s->n; i++)
+        cc_world_add_circle(q->w, &s->c[i]);
+    for (i = 0; i < 4; i++)
+        cc_world_add_segment(q->w, &s->walls[i]);
+    /* extra walls: short segments on rings around the box, from L/20 to L/4 outside it */
+    for (i = 0; i < extra_walls; i++) {
+        int ring = i % rounds_of_walls, k = i / rounds_of_walls, per = (extra_walls + rounds_of_walls - 1) / rounds_of_walls;
+        double c = 0.5 * q->L, rad = q->L * (0.75 + 0.25 * (double)ring / (double)rounds_of_walls);
+        double a0 = 6.283185307179586 * (double)k / (double)per, a1 = a0 + 0.5 * 6.283185307179586 / (double)per;
+        cc_segment g;
+        g.a.x = c + rad * cos(a0), g.a.y = c + rad * sin(a0);
+        g.b.x = c + rad * cos(a1), g.b.y = c + rad * sin(a1);
+        cc_world_add_segment(q->w, &g);
+    }
+    cc_world_step(q->w, 0.5); /* filed and moving */
+}
+
+static void free_gas(qworld *q) { free(q->mem); }
+
+static uint64_t collisions(const cc_world *w)
+{
+    cc_world_stats st;
+    st.struct_size = sizeof st;
+    cc_world_get_stats(w, &st);
+    return st.collisions;
+}
+
+/* ns per cast of a ray and of a circle of radius 1 over 20 circle radii, and per disc query of
+ * radius 3, from random points of the gas; each a median over rounds. */
+static void cast_costs(const qworld *q, int rounds, double *ns_ray, double *ns_cast, double *ns_query, int *hits)
+{
+    enum { PER = 20000 };
+    double *a = bench_alloc((size_t)rounds * sizeof *a), *b = bench_alloc((size_t)rounds * sizeof *b),
+           *c = bench_alloc((size_t)rounds * sizeof *c);
+    int r, k, ids[64];
+    *hits = 0;
+    for (r = 0; r < rounds; r++) {
+        bench_rng rng;
+        double t0;
+        cc_cast_hit h;
+        rng.s = 99u + (uint64_t)r;
+        t0 = bench_now();
+        for (k = 0; k < PER; k++) {
+            cc_vec2 p, d;
+            double ang = bench_uniform(&rng, 0.0, 6.283185307179586);
+            p.x = bench_uniform(&rng, 0.1, 0.9) * q->L, p.y = bench_uniform(&rng, 0.1, 0.9) * q->L;
+            d.x = 10.0 * cos(ang), d.y = 10.0 * sin(ang);
+            *hits += cc_world_cast_circle(q->w, p, 0.0, d, 0xFFFFFFFFu, &h) != CC_MISS;
+        }
+        a[r] = (bench_now() - t0) * 1e9 / PER;
+        t0 = bench_now();
+        for (k = 0; k < PER; k++) {
+            cc_vec2 p, d;
+            double ang = bench_uniform(&rng, 0.0, 6.283185307179586);
+            p.x = bench_uniform(&rng, 0.1, 0.9) * q->L, p.y = bench_uniform(&rng, 0.1, 0.9) * q->L;
+            d.x = 10.0 * cos(ang), d.y = 10.0 * sin(ang);
+            (void)cc_world_cast_circle(q->w, p, 0.5, d, 0xFFFFFFFFu, &h);
+        }
+        b[r] = (bench_now() - t0) * 1e9 / PER;
+        t0 = bench_now();
+        for (k = 0; k < PER; k++) {
+            cc_vec2 p;
+            p.x = bench_uniform(&rng, 0.1, 0.9) * q->L, p.y = bench_uniform(&rng, 0.1, 0.9) * q->L;
+            (void)cc_world_query_circle(q->w, p, 1.5, 0xFFFFFFFFu, ids, 64);
+        }
+        c[r] = (bench_now() - t0) * 1e9 / PER;
+    }
+    *ns_ray = bench_median(a, (size_t)rounds);
+    *ns_cast = bench_median(b, (size_t)rounds);
+    *ns_query = bench_median(c, (size_t)rounds);
+    free(a);
+    free(b);
+    free(c);
+}
+
+static int cmd_casts(int quick)
+{
+    static const int sizes[4] = {1000, 10000, 100000, 1000000};
+    int n_sizes = quick ? 3 : 4, v, rounds = quick ? 3 : 7;
+    double base[3] = {0, 0, 0};
+    printf("%10s %12s %12s %12s %10s %10s %10s\n", "N", "ray ns", "cast ns", "query ns", "ray x", "cast x",
+           "query x");
+    for (v = 0; v < n_sizes; v++) {
+        bench_scene s;
+        qworld q;
+        double ray, cast, query;
+        int hits;
+        bench_scene_gas(&s, sizes[v], 0.3, 7);
+        make_gas(&q, &s, 0, 1);
+        cast_costs(&q, rounds, &ray, &cast, &query, &hits);
+        if (v == 0)
+            base[0] = ray, base[1] = cast, base[2] = query;
+        printf("%10d %12.1f %12.1f %12.1f %10.2f %10.2f %10.2f\n", sizes[v], ray, cast, query, ray / base[0],
+               cast / base[1], query / base[2]);
+        if (v == n_sizes - 1) {
+            char name[64];
+            snprintf(name, sizeof name, "cast_cost_n%d_vs_n1000", sizes[v]);
+            bench_figure(name, cast / base[1]);
+            snprintf(name, sizeof name, "query_cost_n%d_vs_n1000", sizes[v]);
+            bench_figure(name, query / base[2]);
+        }
+        fflush(stdout);
+        free_gas(&q);
+        bench_scene_free(&s);
+    }
+    return 0;
+}
+
+/* The gas of 10,000 circles at 0.3 in its box, 5 simulated seconds, with its 4 walls only and
+ * with 10,000 short walls on rings outside the box that no circle reaches: the same collisions;
+ * the ratio of costs per collision in rounds that alternate the two. */
+static int cmd_walls(int quick)
+{
+    int n = quick ? 2000 : 10000, rounds = quick ? 3 : 7, r, v, walls = 10000;
+    double cost[2][16], lo[2], hi[2], ratio[16];
+    uint64_t coll[2] = {0, 0};
+    bench_scene s;
+    bench_scene_gas(&s, n, 0.3, 11);
+    for (r = 0; r < rounds; r++)
+        for (v = 0; v < 2; v++) {
+            int var = (v + r) & 1, k;
+            qworld q;
+            double t0;
+            uint64_t c0;
+            make_gas(&q, &s, var ? walls : 0, 20);
+            c0 = collisions(q.w);
+            t0 = bench_now();
+            for (k = 0; k < 300; k++)
+                cc_world_step(q.w, 1.0 / 60);
+            coll[var] = collisions(q.w) - c0;
+            cost[var][r] = (bench_now() - t0) * 1e9 / (double)coll[var];
+            free_gas(&q);
+        }
+    for (r = 0; r < rounds; r++)
+        ratio[r] = cost[1][r] / cost[0][r];
+    for (v = 0; v < 2; v++)
+        bench_range(cost[v], (size_t)rounds, &lo[v], &hi[v]);
+    printf("%-34s %14s %22s %12s\n", "walls", "ns/collision", "spread", "collisions");
+    printf("%-34s %14.1f %10.1f - %-9.1f %12llu\n", "4 (the box)", bench_median(cost[0], (size_t)rounds), lo[0],
+           hi[0], (unsigned long long)coll[0]);
+    printf("%-34s %14.1f %10.1f - %-9.1f %12llu%s\n", "4 + 10,000 short walls outside", bench_median(cost[1], (size_t)rounds),
+           lo[1], hi[1], (unsigned long long)coll[1], coll[0] == coll[1] ? "" : "  (different collisions!)");
+    bench_figure("walls_10000_cost_ratio", bench_median(ratio, (size_t)rounds));
+    bench_figure("walls_10000_cost_ratio_of_minima", lo[1] / lo[0]);
+    bench_scene_free(&s);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    int quick = argc > 2 && !strcmp(argv[2], "--quick");
+    if (argc >= 2 && !strcmp(argv[1], "casts"))
+        return cmd_casts(quick);
+    if (argc >= 2 && !strcmp(argv[1], "walls"))
+        return cmd_walls(quick);
+    fprintf(stderr, "usage: %s casts|walls [--quick]\n", argv[0]);
+    return 2;
+}
