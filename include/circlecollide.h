@@ -345,6 +345,9 @@ typedef struct cc_world_def {
                                  ground, length / time^2 (default 0: no friction) */
     int restitution_mix;      /* a CC_MIX_*: a contact's restitution from its sides' (default MIN) */
     cc_sensor_fn on_sensor;   /* called for every sensor event, or NULL (default NULL) */
+    cc_vec2 period;           /* a component > 0 makes the world wrap along that axis with that
+                                 period, positions kept in [0, period); 0 leaves it open (default
+                                 (0, 0)); see "Periodic boxes" */
 } cc_world_def;
 
 /* Defaults for every field; sets struct_size = sizeof(cc_world_def). Does nothing for NULL. */
@@ -401,6 +404,24 @@ CC_API int cc_world_get_circles(const cc_world *w, int *ids, cc_circle *out, int
 /* The wall with this id. CC_OK, CC_ERR_NOT_FOUND or CC_ERR_INVALID. */
 CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
 
+/* Periodic boxes (1.1): a world whose def.period has a component > 0 wraps along that axis.
+ * Positions are kept in [0, period) (cc_world_get_circle gives them so; a circle added or set
+ * anywhere is taken to its image there), distances are to the nearest image, and a circle
+ * crossing the edge keeps its predicted impacts (EXACT finds them through the images of its
+ * neighbours' cells). Periodic in x and open in y, with walls, is a channel. Each period must be
+ * at least twice the largest circle diameter plus a cell (1.0625 diameters, or def.cell_size):
+ * a circle too wide for it is CC_ERR_INVALID. Walls are not repeated: along a periodic axis a
+ * wall should span the period (a channel's sides, reaching a radius beyond both ends) or keep
+ * away from its edges. A periodic world always has a grid, also with max_circles <= 32. SWEPT
+ * and DISCRETE take the nearest image of each pair: a step must not carry a circle half a
+ * period. Casts see every image along their path; queries report each circle once (its image
+ * nearest the query). */
+
+/* The position of circle id without wrapping: where it would be had the periods not been taken
+ * off (for diffusion: the mean squared displacement). Along an open axis, its position. CC_OK,
+ * CC_ERR_NOT_FOUND or CC_ERR_INVALID (NULL). */
+CC_API int cc_world_get_unwrapped(const cc_world *w, int id, cc_vec2 *out);
+
 /* Current world time (0 after init); NaN when w is NULL. */
 CC_API double cc_world_time(const cc_world *w);
 
@@ -413,6 +434,12 @@ typedef struct cc_world_stats {
     uint64_t cell_crossings; /* grid cell changes processed (EXACT) */
     double max_overlap;      /* deepest overlap seen: at each impact (EXACT, SWEPT), or before
                                 pushing apart (overlaps made by the caller, DISCRETE) */
+    /* ---- 1.1 (a stats struct of 1.0's size does not get these) ---- */
+    double virial;           /* sum over circle-circle impulses of impulse * the distance between
+                                the centres at contact, since init: with it the pressure of a
+                                hard-disk fluid in a periodic box is P A = N kT + virial / (2 t) */
+    double wall_impulse;     /* sum of the impulses on walls since init (the force on them, times
+                                the time) */
 } cc_world_stats;
 
 /* Fills the fields that fit in out->struct_size bytes (whole fields only; struct_size itself is

@@ -206,7 +206,8 @@ static void test_stats_size_inside_every_field(void)
         offsetof(cc_world_stats, stale_events) + sizeof(uint64_t),
         offsetof(cc_world_stats, pairs_tested) + sizeof(uint64_t),
         offsetof(cc_world_stats, cell_crossings) + sizeof(uint64_t),
-        offsetof(cc_world_stats, max_overlap) + sizeof(double)};
+        offsetof(cc_world_stats, max_overlap) + sizeof(double), offsetof(cc_world_stats, virial) + sizeof(double),
+        offsetof(cc_world_stats, wall_impulse) + sizeof(double)};
     tw_mem m;
     probe p = {NULL, -1, 0, 0, 0, 0};
     cc_world *w = run(&m, CC_MODE_EXACT, FIRE_STEP, &p);

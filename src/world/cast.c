@@ -46,7 +46,7 @@ static void cc__offer(cc__cast *c, double t, int touch, int wall, int id, cc_vec
     c->point = cc__advance(cc__advance(c->p, c->d, t), n, c->r);
 }
 
-static void cc__cast_visit(void *ctx, int j)
+static void cc__cast_visit(void *ctx, int j, double sx, double sy)
 {
     cc__cast *c = (cc__cast *)ctx;
     const cc_world *w = c->w;
@@ -57,6 +57,8 @@ static void cc__cast_visit(void *ctx, int j)
     if (!cc__category_meets(w, j, c->mask) || CC__CARR(w, cc__props, off_props)[j].sensor >= 0)
         return;
     cc__body_pos(w, j, w->now, &q.x, &q.y);
+    q.x += sx; /* periodic: the image the path meets here */
+    q.y += sy;
     /* relative frame, as cc_sweep: the circle at q - p, the cast moving at d against it */
     dp = cc__diff(c->p, q, &eL);
     r = cc__sweep_rel(dp, cc__v(-c->d.x, -c->d.y), eL ? R * 0.5 : R, eL, 0, 1.0, &t, &n);
@@ -167,7 +169,7 @@ CC_API int cc_world_cast_circle(const cc_world *w, cc_vec2 p, double radius, cc_
         /* the piece's box grown by the radius, and by far more than the rounding of a and b */
         double g = radius + 0x1p-30 * (fabs(a.x) + fabs(a.y) + fabs(b.x) + fabs(b.y) + radius);
         cc__visit_region(w, (a.x < b.x ? a.x : b.x) - g, (a.y < b.y ? a.y : b.y) - g, (a.x < b.x ? b.x : a.x) + g,
-                         (a.y < b.y ? b.y : a.y) + g, cc__cast_visit, &c);
+                         (a.y < b.y ? b.y : a.y) + g, 1, cc__cast_visit, &c);
         if (c.t < t1)
             break; /* every circle touched before t1 has been looked at */
     }

@@ -111,8 +111,13 @@ int cc__step_exact(cc_world *w, double t_end)
         cc__advance_body(&B[i], w->now);
         if (e->t_cross < e->t) {
             int dir = e->dir;
-            cc__grid_move(w, i, dir);
             w->stats.cell_crossings++;
+            if (dir == CC__DIR_AGAIN) { /* a large body of a periodic world: anew, within the period */
+                cc__wrap_body(w, i);
+                cc__predict(w, i);
+                continue;
+            }
+            cc__grid_move(w, i, dir);
             cc__predict_crossed(w, i, dir);
         } else if (e->kind != CC__EV_SEGMENT) { /* a circle, or a sensor pair's begin or end */
             j = e->partner;

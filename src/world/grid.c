@@ -5,9 +5,11 @@
  * go on a separate large list that every body checks. A small world has no grid at all. */
 #include "world_internal.h"
 
-int32_t cc__grid_coord(const cc_world *w, double x)
+int32_t cc__grid_coord(const cc_world *w, double x, int axis)
 {
     double c = floor(x * w->inv_cs);
+    if (w->ncell[axis] > 0) /* periodic: x within [0, period) to rounding; the last cell the wider */
+        return c < 0.0 ? 0 : c >= (double)w->ncell[axis] ? w->ncell[axis] - 1 : (int32_t)c;
     if (!(c > (double)-CC__CELL_MAX))
         return -CC__CELL_MAX; /* also NaN, which valid input never gives */
     if (c > (double)CC__CELL_MAX)
@@ -52,8 +54,10 @@ void cc__grid_insert(cc_world *w, int id)
         return; /* a small world tests all pairs */
     if (2.0 * b->r * 1.0625 > w->cs)
         k->flags |= CC__LARGE;
-    b->cx = cc__grid_coord(w, cc__bx(b, w->now));
-    b->cy = cc__grid_coord(w, cc__by(b, w->now));
+    if (w->features & CC__F_PERIODIC)
+        cc__wrap_body(w, id); /* its coordinates within the period, where its cell is */
+    b->cx = cc__grid_coord(w, cc__bx(b, w->now), 0);
+    b->cy = cc__grid_coord(w, cc__by(b, w->now), 1);
     cc__link(w, id, cc__head_of(w, id));
 }
 
@@ -74,14 +78,44 @@ void cc__grid_remove(cc_world *w, int id)
 void cc__grid_move(cc_world *w, int id, int dir)
 {
     cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
+    int axis = dir >> 1, step = dir & 1 ? -1 : 1;
+    int32_t *c = axis ? &b->cy : &b->cx;
     cc__grid_remove(w, id);
-    if (dir == 0)
-        b->cx++;
-    else if (dir == 1)
-        b->cx--;
-    else if (dir == 2)
-        b->cy++;
-    else
-        b->cy--;
+    *c += step;
+    if (w->ncell[axis] > 0 && (*c < 0 || *c >= w->ncell[axis])) {
+        /* through the period's edge: the body is taken to its image on the other side (at the
+         * edge, so the subtraction is exact), and counts the turn */
+        double *p = axis ? &b->py : &b->px;
+        *c = step > 0 ? 0 : w->ncell[axis] - 1;
+        *p -= step * w->period[axis];
+        CC__ARR(w, cc__props, off_props)[id].wrap[axis] += step;
+    }
     cc__link(w, id, cc__head_of(w, id));
+}
+
+double cc__wrap_coord(const cc_world *w, double x, int k, int32_t *turns)
+{
+    double P = w->period[k], r = fmod(x, P);
+    if (r < 0.0)
+        r += P; /* a tiny negative remainder may round to P itself: that is 0 again */
+    if (r >= P)
+        r = 0.0;
+    *turns = (int32_t)floor((x - r) / P + 0.5);
+    return r;
+}
+
+void cc__wrap_body(cc_world *w, int id)
+{
+    cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
+    cc__props *p = &CC__ARR(w, cc__props, off_props)[id];
+    int k;
+    cc__advance_body(b, w->now);
+    for (k = 0; k < 2; k++) {
+        double *x = k ? &b->py : &b->px;
+        int32_t turns;
+        if (w->period[k] > 0.0 && !(*x >= 0.0 && *x < w->period[k])) {
+            *x = cc__wrap_coord(w, *x, k, &turns);
+            p->wrap[k] += turns;
+        }
+    }
 }

@@ -70,5 +70,6 @@ CC_API uint64_t cc_world_hash(const cc_world *w)
     h = cc__mix_double(cc__mix_double(h, w->restitution), w->rest_speed);
     h = cc__mix_double(cc__mix_double(h, w->cell_hint), w->rolling_decel);
     h = cc__mix(h, w->max_events);
+    h = cc__mix_double(cc__mix_double(h, w->period[0]), w->period[1]);
     return h;
 }

@@ -19,8 +19,8 @@ static int cc__near_interacts(const cc_world *w, int k, int j)
 /* Circle j within tol of the circle of radius kr at (kx, ky) at w->now. */
 static int cc__touching_circle(const cc_world *w, const cc__body *bj, double kx, double ky, double kr, double tol)
 {
-    double dx = cc__bx(bj, w->now) - kx;
-    double dy = cc__by(bj, w->now) - ky;
+    double dx = cc__near_d(w, cc__bx(bj, w->now) - kx, 0);
+    double dy = cc__near_d(w, cc__by(bj, w->now) - ky, 1);
     double R = kr + bj->r + tol;
     return dx * dx + dy * dy <= R * R;
 }
@@ -37,6 +37,22 @@ int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit vis
         for (j = 0; j < w->id_end; j++)
             if (j != k && (C[j].flags & CC__ALIVE) && cc__touching_circle(w, &B[j], kx, ky, kr, tol) &&
                 cc__near_interacts(w, k, j)) {
+                visit(ctx, j, -1);
+                n++;
+            }
+    } else if (w->features & CC__F_PERIODIC) { /* the cells around, wrapped, each once */
+        const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+        int32_t xs[9], ys[9];
+        int c, nc = cc__cells_around(w, B[k].cx, B[k].cy, xs, ys);
+        for (c = 0; c < nc; c++)
+            for (j = slot[cc__grid_slot(w, xs[c], ys[c])]; j >= 0; j = B[j].next)
+                if (B[j].cx == xs[c] && B[j].cy == ys[c] && j != k && cc__touching_circle(w, &B[j], kx, ky, kr, tol) &&
+                    cc__near_interacts(w, k, j)) {
+                    visit(ctx, j, -1);
+                    n++;
+                }
+        for (j = w->large_head; j >= 0; j = B[j].next)
+            if (j != k && cc__touching_circle(w, &B[j], kx, ky, kr, tol) && cc__near_interacts(w, k, j)) {
                 visit(ctx, j, -1);
                 n++;
             }

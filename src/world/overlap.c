@@ -30,9 +30,9 @@ static void cc__refile_moved(cc_world *w, int only)
  * and walls that are nowhere near: each is conservative (it rules out only what the exact test
  * in cc__world_unoverlap would find apart, with a margin far above rounding), so the outcome is
  * bit for bit that of testing everything. Both bodies are at w->now. */
-static inline int cc__circles_apart(const cc__body *a, const cc__body *b)
+static inline int cc__circles_apart(const cc_world *w, const cc__body *a, const cc__body *b)
 {
-    double dx = b->px - a->px, dy = b->py - a->py, R = a->r + b->r, R2 = R * R;
+    double dx = cc__near_d(w, b->px - a->px, 0), dy = cc__near_d(w, b->py - a->py, 1), R = a->r + b->r, R2 = R * R;
     /* R2 normal: squares below that lose relative precision */
     return R2 > 0x1p-1000 && dx * dx + dy * dy > R2 * (1.0 + 0x1p-20);
 }
@@ -43,7 +43,7 @@ static void cc__unoverlap_pair(cc_world *w, int i, int j)
     cc__body *B = CC__ARR(w, cc__body, off_body);
     cc__advance_body(&B[j], w->now);
     w->stats.pairs_tested++;
-    if (!cc__circles_apart(&B[i], &B[j]))
+    if (!cc__circles_apart(w, &B[i], &B[j]))
         (void)cc__world_unoverlap(w, i, j, -1);
 }
 
@@ -80,6 +80,18 @@ static void cc__unoverlap_body(cc_world *w, int i, int only_higher)
         for (j = only_higher ? i + 1 : 0; j < w->id_end; j++)
             if (j != i && (C[j].flags & CC__ALIVE))
                 cc__unoverlap_pair(w, i, j);
+    } else if (w->features & CC__F_PERIODIC) { /* the cells around, wrapped, each once */
+        const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+        int32_t xs[9], ys[9];
+        int c, nc = cc__cells_around(w, B[i].cx, B[i].cy, xs, ys);
+        for (c = 0; c < nc; c++)
+            for (j = slot[cc__grid_slot(w, xs[c], ys[c])]; j >= 0; j = B[j].next)
+                if (B[j].cx == xs[c] && B[j].cy == ys[c] && j != i && (!only_higher || j > i))
+                    cc__unoverlap_pair(w, i, j);
+        if (!only_higher)
+            for (j = w->large_head; j >= 0; j = B[j].next)
+                if (j != i)
+                    cc__unoverlap_pair(w, i, j);
     } else {
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
         int32_t cx = B[i].cx, cy = B[i].cy, x, y;
@@ -113,9 +125,12 @@ static void cc__file_all(cc_world *w)
         hpos[i] = -1;
         if (!(C[i].flags & CC__ALIVE))
             continue;
-        cc__advance_body(b, w->now);
-        b->cx = cc__cell_of(w, b->px);
-        b->cy = cc__cell_of(w, b->py);
+        if (w->features & CC__F_PERIODIC)
+            cc__wrap_body(w, i); /* carried to now, within the period */
+        else
+            cc__advance_body(b, w->now);
+        b->cx = w->ncell[0] ? cc__grid_coord(w, b->px, 0) : cc__cell_of(w, b->px);
+        b->cy = w->ncell[1] ? cc__grid_coord(w, b->py, 1) : cc__cell_of(w, b->py);
         C[i].flags &= ~CC__LARGE;
         if (2.0 * b->r * 1.0625 > w->cs) {
             C[i].flags |= CC__LARGE;
@@ -135,6 +150,13 @@ static void cc__file_all(cc_world *w)
  * cells ahead, (x+1, y) and the three of row y+1. */
 static void cc__unoverlap_cells(cc_world *w)
 {
+    if (w->features & CC__F_PERIODIC) { /* each circle against the wrapped cells around it, each pair once */
+        int k;
+        for (k = 0; k < w->id_end; k++)
+            if ((CC__CARR(w, cc__cold, off_cold)[k].flags & (CC__ALIVE | CC__LARGE)) == CC__ALIVE)
+                cc__unoverlap_body(w, k, 1);
+        return;
+    }
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
     uint32_t s;
@@ -167,6 +189,11 @@ void cc__rebuild(cc_world *w)
     int i, j;
     w->cs = cc__world_cell_size(w);
     w->inv_cs = 1.0 / w->cs;
+    for (i = 0; i < 2; i++) { /* periodic: whole cells along the period, the last one the wider */
+        w->ncell[i] = w->period[i] > 0.0 ? (int32_t)floor(w->period[i] / w->cs) : 0;
+        if (w->ncell[i] > 1 && (double)w->ncell[i] * w->cs > w->period[i])
+            w->ncell[i]--; /* the division rounded up: the last cell must not be narrower */
+    }
     if (w->wall_tree_n != w->n_segments)
         cc__walls_build(w); /* walls were added: the tree is made again */
     w->heap_n = 0;

@@ -55,11 +55,12 @@ typedef struct cc__alone {
 
 /* The sensor pair i-j's next begin or end, kept when it comes first (out of line: sensor worlds
  * only). */
-CC__NOINLINE void cc__try_sensor(const cc_world *w, int i, int j, cc__cand *best, uint64_t *tests)
+CC__NOINLINE void cc__try_sensor(const cc_world *w, int i, int j, double sx, double sy, cc__cand *best,
+                                 uint64_t *tests)
 {
     double t;
     ++*tests;
-    t = cc__sensor_next(w, i, j);
+    t = cc__sensor_next(w, i, j, sx, sy);
     if (!(t < best->t))
         return;
     best->t = t;
@@ -70,7 +71,8 @@ CC__NOINLINE void cc__try_sensor(const cc_world *w, int i, int j, cc__cand *best
 
 /* What a world with filters or sensors decides before the geometry of pair i-j (feat): 1 when
  * the pair is done with (filtered out, two sensors, or a sensor pair handled here). */
-CC__INLINE_ALWAYS int cc__featured_pair(const cc_world *w, int i, int j, cc__cand *best, uint64_t *tests)
+CC__INLINE_ALWAYS int cc__featured_pair(const cc_world *w, int i, int j, double sx, double sy, cc__cand *best,
+                                        uint64_t *tests)
 {
     const cc__props *P = CC__CARR(w, cc__props, off_props);
     if (!cc__filter_pass(&P[i], &P[j]))
@@ -78,27 +80,28 @@ CC__INLINE_ALWAYS int cc__featured_pair(const cc_world *w, int i, int j, cc__can
     if (P[i].sensor < 0 && P[j].sensor < 0)
         return 0;
     if (P[i].sensor < 0 || P[j].sensor < 0) /* a sensor and its visitor (sensors sense no sensor) */
-        cc__try_sensor(w, i, j, best, tests);
+        cc__try_sensor(w, i, j, sx, sy, best, tests);
     return 1;
 }
 
-/* Contact of moving body i (at now) with circle j: a hit approaching faster than rounding, or
- * an overlap left by rounding whose bodies approach (a contact now). Inline: the scans call it
- * for every neighbour, and most are rejected by the first test. feat: the world has filters or
- * sensors (a constant, so that a world without them compiles the pair test of 1.0). */
+/* Contact of moving body i (at now) with circle j (its image shifted by (sx, sy) in a periodic
+ * world): a hit approaching faster than rounding, or an overlap left by rounding whose bodies
+ * approach (a contact now). Inline: the scans call it for every neighbour, and most are rejected
+ * by the first test. feat: the world has filters, sensors or periods (a constant, so that a
+ * world without them compiles the pair test of 1.0, shifts 0 included). */
 CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, const cc__body *bi, int i, int i_fixed,
-                                        int j, double now, cc__cand *best, uint64_t *tests, int check, cc__alone *al,
-                                        int feat)
+                                        int j, double sx, double sy, double now, cc__cand *best, uint64_t *tests,
+                                        int check, cc__alone *al, int feat)
 {
     const cc__body *bj = &B[j];
     double dt = now - bj->t, R, dv2, cr;
     cc_vec2 dp, dv;
-    if (feat && cc__featured_pair(w, i, j, best, tests))
+    if (feat && cc__featured_pair(w, i, j, sx, sy, best, tests))
         return;
     if (i_fixed && isinf(CC__CARR(w, cc__cold, off_cold)[j].m))
         return; /* two immovable circles pass through each other */
-    dp.x = (bj->px + bj->vx * dt) - bi->px;
-    dp.y = (bj->py + bj->vy * dt) - bi->py;
+    dp.x = (bj->px + bj->vx * dt + sx) - bi->px;
+    dp.y = (bj->py + bj->vy * dt + sy) - bi->py;
     dv.x = bj->vx - bi->vx;
     dv.y = bj->vy - bi->vy;
     if (check && j != al->partner) { /* the same distance near.c computes, against a larger reach */
@@ -159,24 +162,32 @@ static void cc__try_segments(cc_world *w, int i, const cc__body *bi, double t_cr
     }
 }
 
-/* When body b (at now, in cell c) leaves its cell, and through which side. */
+/* The upper bound of cell c along axis k: the period's end for the last cell of a periodic axis. */
+static double cc__cell_top(const cc_world *w, int32_t c, int k)
+{
+    return w->ncell[k] > 0 && c == w->ncell[k] - 1 ? w->period[k] : ((double)c + 1.0) * w->cs;
+}
+
+/* When body b (at now, in cell c) leaves its cell, and through which side. Along a periodic axis
+ * every cell has both sides (the last cell's upper one is the period's end, beyond which the
+ * first cell begins again); along an open axis the outermost cells have none outwards. */
 static double cc__cross_time(const cc_world *w, const cc__body *b, int32_t *dir)
 {
     double tx = HUGE_VAL, ty = HUGE_VAL;
-    int dx = -1, dy = -1;
-    if (b->vx > 0.0 && b->cx < CC__CELL_MAX) {
-        tx = ((double)b->cx + 1.0) * w->cs - b->px;
+    int dx = -1, dy = -1, px = w->ncell[0] > 0, py = w->ncell[1] > 0;
+    if (b->vx > 0.0 && (px || b->cx < CC__CELL_MAX)) {
+        tx = cc__cell_top(w, b->cx, 0) - b->px;
         tx /= b->vx;
         dx = 0;
-    } else if (b->vx < 0.0 && b->cx > -CC__CELL_MAX) {
+    } else if (b->vx < 0.0 && (px || b->cx > -CC__CELL_MAX)) {
         tx = ((double)b->cx * w->cs - b->px) / b->vx;
         dx = 1;
     }
-    if (b->vy > 0.0 && b->cy < CC__CELL_MAX) {
-        ty = ((double)b->cy + 1.0) * w->cs - b->py;
+    if (b->vy > 0.0 && (py || b->cy < CC__CELL_MAX)) {
+        ty = cc__cell_top(w, b->cy, 1) - b->py;
         ty /= b->vy;
         dy = 2;
-    } else if (b->vy < 0.0 && b->cy > -CC__CELL_MAX) {
+    } else if (b->vy < 0.0 && (py || b->cy > -CC__CELL_MAX)) {
         ty = ((double)b->cy * w->cs - b->py) / b->vy;
         dy = 3;
     }
@@ -205,6 +216,19 @@ CC__INLINE_ALWAYS void cc__scan_block_x(const cc_world *w, const cc__body *B, in
     uint32_t s_row = cc__grid_slot(w, x0, y0), s;
     int32_t x, y;
     int j;
+    if (feat && (w->features & CC__F_PERIODIC)) {
+        /* the cells by their logical coordinates: across a period's edge each is the image of a
+         * cell of the period, and its circles are seen shifted by the period */
+        for (y = y0; y < y0 + ny; y++)
+            for (x = x0; x < x0 + nx; x++) {
+                double sx, sy;
+                int32_t cx = cc__cell_image(w, x, 0, &sx), cy = cc__cell_image(w, y, 1, &sy);
+                for (j = slot[cc__grid_slot(w, cx, cy)]; j >= 0; j = B[j].next)
+                    if (B[j].cx == cx && B[j].cy == cy && j != i)
+                        cc__try_circle_x(w, B, &B[i], i, i_fixed, j, sx, sy, now, best, tests, check, al, feat);
+            }
+        return;
+    }
     for (y = y0; y < y0 + ny; y++) {
         if (y != y0)
             s_row = ((uint32_t)y & my) ? (s_row + row) & mask : cc__grid_slot(w, x0, y);
@@ -213,7 +237,7 @@ CC__INLINE_ALWAYS void cc__scan_block_x(const cc_world *w, const cc__body *B, in
                 s = ((uint32_t)x & mx) ? (s + 1u) & mask : cc__grid_slot(w, x, y);
             for (j = slot[s]; j >= 0; j = B[j].next)
                 if (B[j].cx == x && B[j].cy == y && j != i)
-                    cc__try_circle_x(w, B, &B[i], i, i_fixed, j, now, best, tests, check, al, feat);
+                    cc__try_circle_x(w, B, &B[i], i, i_fixed, j, 0.0, 0.0, now, best, tests, check, al, feat);
         }
     }
 }
@@ -241,6 +265,36 @@ static void cc__scan_block_alone_feat(const cc_world *w, const cc__body *B, int 
                                       int32_t y0, cc__cand *best, uint64_t *tests, cc__alone *al)
 {
     cc__scan_block_x(w, B, i, i_fixed, x0, y0, 3, 3, best, tests, 1, al, 1);
+}
+
+/* Circle j, not filed in the cells around i (a large circle), against body i in a periodic
+ * world: its images one period either way along each periodic axis. Body i stays within a
+ * period of where it is until it crosses the period's edge, where it predicts anew
+ * (cc__predict_crossed), so that no other image can be reached first. */
+static void cc__try_images(const cc_world *w, const cc__body *B, const cc__body *bi, int i, int fixed, int j,
+                           cc__cand *best, uint64_t *tests, int check, cc__alone *al)
+{
+    /* around the image nearest i now (a large circle that moves is nowhere in particular) */
+    double sx = cc__near_shift(w, bi->px, cc__bx(&B[j], w->now), 0), sy = cc__near_shift(w, bi->py, cc__by(&B[j], w->now), 1);
+    int a, b;
+    for (a = -1; a <= 1; a++)
+        for (b = -1; b <= 1; b++)
+            if ((a == 0 || w->period[0] > 0.0) && (b == 0 || w->period[1] > 0.0))
+                cc__try_circle_x(w, B, bi, i, fixed, j, sx + a * w->period[0], sy + b * w->period[1], w->now, best,
+                                 tests, check, al, 1);
+}
+
+/* A body that has no cells to cross (a large circle) in a periodic world: it looks again once it
+ * has travelled half a period along an axis, so that the images it looks at stay the ones it can
+ * reach (dir CC__DIR_AGAIN). */
+static double cc__again_time(const cc_world *w, const cc__body *b)
+{
+    double t = HUGE_VAL;
+    if (w->period[0] > 0.0 && b->vx != 0.0)
+        t = 0.5 * w->period[0] / fabs(b->vx);
+    if (w->period[1] > 0.0 && b->vy != 0.0 && 0.5 * w->period[1] / fabs(b->vy) < t)
+        t = 0.5 * w->period[1] / fabs(b->vy);
+    return w->now + t;
 }
 
 /* Stores the prediction and queues the body by its earlier event. */
@@ -280,8 +334,16 @@ CC__INLINE_ALWAYS uint64_t cc__predict_scan(cc_world *w, int i, cc__cand *best, 
     best->pcount = 0;
     if (!w->use_grid || (C[i].flags & CC__LARGE)) {
         for (j = 0; j < w->id_end; j++)
-            if (j != i && (C[j].flags & CC__ALIVE))
-                cc__try_circle_x(w, B, bi, i, fixed, j, w->now, best, &tests, check, al, feat);
+            if (j != i && (C[j].flags & CC__ALIVE)) {
+                if (feat && (w->features & CC__F_PERIODIC))
+                    cc__try_images(w, B, bi, i, fixed, j, best, &tests, check, al);
+                else
+                    cc__try_circle_x(w, B, bi, i, fixed, j, 0.0, 0.0, w->now, best, &tests, check, al, feat);
+            }
+        if (feat && (w->features & CC__F_PERIODIC)) {
+            *t_cross = cc__again_time(w, bi);
+            *dir = CC__DIR_AGAIN;
+        }
     } else {
         if (check && feat)
             cc__scan_block_alone_feat(w, B, i, fixed, bi->cx - 1, bi->cy - 1, best, &tests, al);
@@ -292,8 +354,12 @@ CC__INLINE_ALWAYS uint64_t cc__predict_scan(cc_world *w, int i, cc__cand *best, 
         else
             cc__scan_block(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, best, &tests);
         for (j = w->large_head; j >= 0; j = B[j].next)
-            if (j != i)
-                cc__try_circle_x(w, B, bi, i, fixed, j, w->now, best, &tests, check, al, feat);
+            if (j != i) {
+                if (feat && (w->features & CC__F_PERIODIC))
+                    cc__try_images(w, B, bi, i, fixed, j, best, &tests, check, al);
+                else
+                    cc__try_circle_x(w, B, bi, i, fixed, j, 0.0, 0.0, w->now, best, &tests, check, al, feat);
+            }
         *t_cross = cc__cross_time(w, bi, dir);
     }
     return tests;
@@ -371,6 +437,12 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
         cc__predict(w, i); /* the known hit is stale: the old cells need a new look too */
         return;
     }
+    if ((w->features & CC__F_PERIODIC) &&
+        ((dir == 0 && cx == 0) || (dir == 1 && cx == w->ncell[0] - 1) || (dir == 2 && cy == 0) ||
+         (dir == 3 && cy == w->ncell[1] - 1)) && w->ncell[dir >> 1] > 0) {
+        cc__predict(w, i); /* through a period's edge: every image (the large circles') anew */
+        return;
+    }
     best.t = ev->t;
     best.kind = ev->kind;
     best.partner = ev->partner;
@@ -401,6 +473,17 @@ void cc__predict_neighbours(cc_world *w, int id)
         for (j = 0; j < w->id_end; j++)
             if (j != id && (C[j].flags & CC__ALIVE) && (B[j].vx != 0.0 || B[j].vy != 0.0))
                 cc__predict(w, j);
+    } else if (w->features & CC__F_PERIODIC) { /* the cells around, wrapped, each once */
+        const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+        int32_t xs[9], ys[9];
+        int c, nc = cc__cells_around(w, B[id].cx, B[id].cy, xs, ys);
+        for (c = 0; c < nc; c++)
+            for (j = slot[cc__grid_slot(w, xs[c], ys[c])]; j >= 0; j = B[j].next)
+                if (B[j].cx == xs[c] && B[j].cy == ys[c] && j != id && (B[j].vx != 0.0 || B[j].vy != 0.0))
+                    cc__predict(w, j);
+        for (j = w->large_head; j >= 0; j = B[j].next)
+            if (j != id && (B[j].vx != 0.0 || B[j].vy != 0.0))
+                cc__predict(w, j);
     } else {
         const int32_t *slot = CC__CARR(w, int32_t, off_slot);
         int32_t cx = B[id].cx, cy = B[id].cy, x, y;
@@ -428,7 +511,7 @@ void cc__prefetch_ahead(const cc_world *w)
     const cc__event *EV = CC__CARR(w, cc__event, off_ev);
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
     int q, m = 1, end = w->heap_n < 5 ? w->heap_n : 5;
-    if (w->heap_n < CC__PREFETCH_MIN_BODIES || !w->use_grid)
+    if (w->heap_n < CC__PREFETCH_MIN_BODIES || !w->use_grid || (w->features & CC__F_PERIODIC))
         return;
     for (q = 1; q < end; q++) {
         __builtin_prefetch(&B[heap[q].id]);

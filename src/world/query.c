@@ -65,15 +65,20 @@ static void cc__sort_kept(cc__query *q)
     }
 }
 
-static void cc__query_visit(void *ctx, int j)
+static void cc__query_visit(void *ctx, int j, double sx, double sy)
 {
     cc__query *q = (cc__query *)ctx;
     const cc_world *w = q->w;
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[j];
     double x, y, dx, dy;
+    (void)sx, (void)sy;
     if (!cc__category_meets(w, j, q->mask))
         return;
     cc__body_pos(w, j, w->now, &x, &y);
+    if (w->features & CC__F_PERIODIC) { /* the image nearest the query (each circle once) */
+        x += cc__near_shift(w, 0.5 * (q->x0 + q->x1), x, 0);
+        y += cc__near_shift(w, 0.5 * (q->y0 + q->y1), y, 1);
+    }
     if (q->box) {
         /* the centre's distance from the closed box, against the (closed) disc */
         dx = x < q->x0 ? q->x0 - x : x > q->x1 ? x - q->x1 : 0.0;
@@ -93,7 +98,7 @@ static void cc__query_visit(void *ctx, int j)
 static int cc__query_run(cc__query *q)
 {
     double g = q->box ? 0.0 : q->r;
-    cc__visit_region(q->w, q->x0 - g, q->y0 - g, q->x1 + g, q->y1 + g, cc__query_visit, q);
+    cc__visit_region(q->w, q->x0 - g, q->y0 - g, q->x1 + g, q->y1 + g, 0, cc__query_visit, q);
     cc__sort_kept(q);
     return q->count;
 }

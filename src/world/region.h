@@ -6,7 +6,79 @@
 #include "world_internal.h"
 #include "scan.h"
 
-typedef void (*cc__region_visit)(void *ctx, int j);
+/* j: a circle's storage index; (sx, sy): the shift of its image in a periodic world. */
+typedef void (*cc__region_visit)(void *ctx, int j, double sx, double sy);
+
+/* The logical cell (numbered on through the periods, see cc__cell_image) of coordinate x along
+ * periodic axis k. */
+static inline int64_t cc__logical_cell(const cc_world *w, double x, int k)
+{
+    double P = w->period[k], q = floor(x / P), c = floor((x - q * P) * w->inv_cs);
+    int64_t n = w->ncell[k];
+    if (!(q > -1e15 && q < 1e15))
+        q = q < 0.0 ? -1e15 : 1e15; /* NaN never comes; a box across a million million periods is clamped */
+    c = c < 0.0 ? 0.0 : c >= (double)n ? (double)(n - 1) : c;
+    return (int64_t)q * n + (int64_t)c;
+}
+
+/* The periodic version of cc__visit_region: the logical cells of the box and one around. With
+ * `images`, each cell's circles are visited with the shift of its image, as often as the box
+ * holds images of it (casts: every image along the path); without, each cell once, shifts 0
+ * (queries: the caller takes the nearest image). */
+static inline void cc__visit_region_periodic(const cc_world *w, double x0, double y0, double x1, double y1,
+                                             int images, cc__region_visit visit, void *ctx)
+{
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+    int64_t lo[2], hi[2], x, y;
+    double lox[2] = {x0, y0}, hix[2] = {x1, y1};
+    int k, j;
+    for (k = 0; k < 2; k++) {
+        if (w->ncell[k] > 0) {
+            lo[k] = cc__logical_cell(w, lox[k], k) - 1;
+            hi[k] = cc__logical_cell(w, hix[k], k) + 1;
+            if (!images && hi[k] - lo[k] + 1 >= w->ncell[k])
+                lo[k] = 0, hi[k] = w->ncell[k] - 1;
+        } else {
+            lo[k] = cc__cell_of(w, lox[k]) - 1;
+            hi[k] = cc__cell_of(w, hix[k]) + 1;
+        }
+    }
+    if (((double)hi[0] - (double)lo[0] + 1.0) * ((double)hi[1] - (double)lo[1] + 1.0) > 4.0 * (double)w->id_end + 9.0) {
+        /* more cells than circles: each circle, once (its nearest image to the box's centre) */
+        const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
+        double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+        for (j = 0; j < w->id_end; j++)
+            if (C[j].flags & CC__ALIVE) {
+                double px, py;
+                cc__body_pos(w, j, w->now, &px, &py);
+                visit(ctx, j, images ? cc__near_shift(w, cx, px, 0) : 0.0, images ? cc__near_shift(w, cy, py, 1) : 0.0);
+            }
+        return;
+    }
+    for (y = lo[1]; y <= hi[1]; y++)
+        for (x = lo[0]; x <= hi[0]; x++) {
+            double sx, sy;
+            int32_t cx = cc__cell_image(w, x, 0, &sx), cy = cc__cell_image(w, y, 1, &sy);
+            for (j = slot[cc__grid_slot(w, cx, cy)]; j >= 0; j = B[j].next)
+                if (B[j].cx == cx && B[j].cy == cy)
+                    visit(ctx, j, images ? sx : 0.0, images ? sy : 0.0);
+        }
+    for (j = w->large_head; j >= 0; j = B[j].next) { /* large circles: their images near the box */
+        double px, py;
+        cc__body_pos(w, j, w->now, &px, &py);
+        if (!images) {
+            visit(ctx, j, 0.0, 0.0);
+        } else {
+            double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1), bx = cc__near_shift(w, cx, px, 0), by = cc__near_shift(w, cy, py, 1);
+            int a, b;
+            for (a = -1; a <= 1; a++)
+                for (b = -1; b <= 1; b++)
+                    if ((a == 0 || w->period[0] > 0.0) && (b == 0 || w->period[1] > 0.0))
+                        visit(ctx, j, bx + a * w->period[0], by + b * w->period[1]);
+        }
+    }
+}
 
 /* Whether the grid may answer: EXACT keeps every circle filed under its current cell between
  * steps; the other modes file at the start of a step, and a world waiting for its rebuild has
@@ -16,12 +88,12 @@ static inline int cc__grid_current(const cc_world *w)
     return w->use_grid && w->mode == CC_MODE_EXACT && !w->dirty;
 }
 
-/* Calls visit(ctx, j) once for every live circle j (storage index) that can overlap the box
+/* Calls visit(ctx, j, ...) once for every live circle j (storage index) that can overlap the box
  * [x0, x1] x [y0, y1] now: those filed in the cells of the box and one cell around it (a circle
  * filed by its centre reaches at most half a cell out of it, and the ring covers the rounding of
  * cell crossings), and the large circles; every live circle when the grid cannot answer or the
  * box covers more cells than there are circles. */
-static inline void cc__visit_region(const cc_world *w, double x0, double y0, double x1, double y1,
+static inline void cc__visit_region(const cc_world *w, double x0, double y0, double x1, double y1, int images,
                                     cc__region_visit visit, void *ctx)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
@@ -30,6 +102,10 @@ static inline void cc__visit_region(const cc_world *w, double x0, double y0, dou
     int32_t cx0, cx1, cy0, cy1, x, y;
     uint32_t s = 0;
     int j;
+    if ((w->features & CC__F_PERIODIC) && cc__grid_current(w)) {
+        cc__visit_region_periodic(w, x0, y0, x1, y1, images, visit, ctx);
+        return;
+    }
     if (cc__grid_current(w)) {
         cx0 = cc__cell_of(w, x0);
         cx1 = cc__cell_of(w, x1);
@@ -44,15 +120,15 @@ static inline void cc__visit_region(const cc_world *w, double x0, double y0, dou
                 for (x = cx0; x <= cx1; x++)
                     for (s = cc__row_slot(w, x, y, s, x == cx0), j = slot[s]; j >= 0; j = B[j].next)
                         if (B[j].cx == x && B[j].cy == y)
-                            visit(ctx, j);
+                            visit(ctx, j, 0.0, 0.0);
             for (j = w->large_head; j >= 0; j = B[j].next)
-                visit(ctx, j);
+                visit(ctx, j, 0.0, 0.0);
             return;
         }
     }
-    for (j = 0; j < w->id_end; j++)
+    for (j = 0; j < w->id_end; j++) /* (periodic: the caller takes the nearest image) */
         if (C[j].flags & CC__ALIVE)
-            visit(ctx, j);
+            visit(ctx, j, 0.0, 0.0);
 }
 
 /* Whether circle j's category meets mask (a world without properties: every category is 1). */

@@ -25,6 +25,10 @@ void cc__world_report(cc_world *w, int a, int b, int seg, const cc_contact *k, d
 {
     cc_contact_event e;
     w->stats.collisions++;
+    if (b >= 0) /* the distance between the centres at contact: the radii less the overlap */
+        w->stats.virial += impulse * (CC__CARR(w, cc__body, off_body)[a].r + CC__CARR(w, cc__body, off_body)[b].r - k->depth);
+    else
+        w->stats.wall_impulse += impulse;
     if (w->on_contact == NULL)
         return;
     e.a = CC__CARR(w, int32_t, off_idx2id)[a]; /* the caller's ids, not storage indices */
@@ -79,7 +83,9 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc, cc_contact *held, d
     if (tc->b >= 0) {
         cc__body *bb = &B[tc->b];
         cc_circle cb = cc__as_circle(w, tc->b);
-        cc_vec2 d = cc__sub(cb.pos, ca.pos);
+        cc_vec2 d;
+        cc__near_image(w, ca.pos, &cb.pos); /* periodic: the image it touches */
+        d = cc__sub(cb.pos, ca.pos);
         double dist = cc__length(d);
         k.t = 0.0;
         k.normal = cc__unit(d);
@@ -183,13 +189,17 @@ int cc__world_unoverlap(cc_world *w, int a, int b, int seg)
         cc__body *bb = &B[b];
         cc_circle cb = cc__as_circle(w, b);
         cc_contact k;
+        cc_vec2 image = cb.pos;
         if (isinf(ca.mass) && isinf(cb.mass))
             return 0;
+        cc__near_image(w, ca.pos, &cb.pos); /* periodic: the image it overlaps */
+        image = cc__sub(cb.pos, image);     /* the shift, taken off again below */
         if (cc_detect_static(&ca, &cb, &k) != CC_OVERLAP)
             return 0;
         cc__world_overlap_seen(w, k.depth);
         if (cc_separate(&ca, &cb) != CC_OVERLAP)
             return 0;
+        cb.pos = cc__sub(cb.pos, image);
         if (ca.pos.x != ba->px || ca.pos.y != ba->py) {
             ba->px = ca.pos.x;
             ba->py = ca.pos.y;

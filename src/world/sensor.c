@@ -53,7 +53,8 @@ static int cc__senses(const cc_world *w, int s, int v)
 int cc__sensor_overlaps(const cc_world *w, int s, int v)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
-    double dx = cc__bx(&B[v], w->now) - cc__bx(&B[s], w->now), dy = cc__by(&B[v], w->now) - cc__by(&B[s], w->now);
+    double dx = cc__near_d(w, cc__bx(&B[v], w->now) - cc__bx(&B[s], w->now), 0);
+    double dy = cc__near_d(w, cc__by(&B[v], w->now) - cc__by(&B[s], w->now), 1);
     double R = B[s].r + B[v].r;
     return dx * dx + dy * dy < R * R;
 }
@@ -123,15 +124,18 @@ static double cc__boundary_tol(const cc_world *w, const cc__body *a, const cc__b
     return 0x1p-40 * (m + v * fabs(w->now));
 }
 
-double cc__sensor_next(const cc_world *w, int i, int j)
+double cc__sensor_next(const cc_world *w, int i, int j, double sx, double sy)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const cc__body *a = &B[i], *b = &B[j];
-    double ax = cc__bx(a, w->now), ay = cc__by(a, w->now), bx = cc__bx(b, w->now), by = cc__by(b, w->now);
+    double ax = cc__bx(a, w->now), ay = cc__by(a, w->now), bx = cc__bx(b, w->now) + sx, by = cc__by(b, w->now) + sy;
     double R = a->r + b->r, d, gap, tol, t;
     cc_vec2 dp, dv, n;
     int s, v;
     cc__roles(w, i, j, &s, &v);
+    if ((w->features & CC__F_PERIODIC) && cc__inside(w, s, v) &&
+        (cc__near_d(w, bx - ax, 0) != bx - ax || cc__near_d(w, by - ay, 1) != by - ay))
+        return HUGE_VAL; /* inside through the nearest image: this one ends nothing */
     dp = cc__v(bx - ax, by - ay);
     dv = cc__v(b->vx - a->vx, b->vy - a->vy);
     d = sqrt(dp.x * dp.x + dp.y * dp.y);

@@ -46,9 +46,9 @@ static cc_vec2 cc__v(double x, double y)
 static double cc__inf_norm(double x, double y) { return fabs(x) > fabs(y) ? fabs(x) : fabs(y); }
 
 /* Unit vector from a to b at world time now; (1, 0) for coincident centres, like cc_sweep. */
-static cc_vec2 cc__centre_normal(const cc__body *a, const cc__body *b, double now)
+static cc_vec2 cc__centre_normal(const cc_world *w, const cc__body *a, const cc__body *b, double now)
 {
-    double dx = cc__bx(b, now) - cc__bx(a, now), dy = cc__by(b, now) - cc__by(a, now);
+    double dx = cc__near_d(w, cc__bx(b, now) - cc__bx(a, now), 0), dy = cc__near_d(w, cc__by(b, now) - cc__by(a, now), 1);
     double d = sqrt(dx * dx + dy * dy);
     return d > 0.0 ? cc__v(dx / d, dy / d) : cc__v(1.0, 0.0);
 }
@@ -158,14 +158,15 @@ static void cc__clu_visit(void *ctx, int j, int s)
     int k = c->id[c->from], i;
     if (j >= 0) {
         double jx = cc__bx(&B[j], w->now), jy = cc__by(&B[j], w->now);
-        double dx = jx - c->fx, dy = jy - c->fy, gap = sqrt(dx * dx + dy * dy) - (B[k].r + B[j].r);
+        double dx = cc__near_d(w, jx - c->fx, 0), dy = cc__near_d(w, jy - c->fy, 1);
+        double gap = sqrt(dx * dx + dy * dy) - (B[k].r + B[j].r);
         if (isinf(C[k].m) && isinf(C[j].m))
             return; /* immovable circles pass through each other */
         if (gap > cc__clu_tol(w, k, c->fx, c->fy, B[j].r, jx, jy, B[j].vx, B[j].vy))
             return;
         i = cc__clu_body(c, j);
         if (i >= 0)
-            cc__clu_contact(c, c->from, i, -1, cc__centre_normal(&B[k], &B[j], w->now));
+            cc__clu_contact(c, c->from, i, -1, cc__centre_normal(w, &B[k], &B[j], w->now));
     } else {
         cc_contact kk = cc__wall_now(w, k, s);
         if (-kk.depth <= cc__clu_tol(w, k, c->fx, c->fy, 0.0, kk.point.x, kk.point.y, 0.0, 0.0))
@@ -212,6 +213,8 @@ int cc__cluster_pair_reach(const cc_world *w, int a, int b, double *reach_a, dou
     double vmax = va > vb ? va : vb, rmax = w->cs, common;
     double ax = cc__bx(&B[a], w->now), ay = cc__by(&B[a], w->now), bx = cc__bx(&B[b], w->now),
            by = cc__by(&B[b], w->now), ga, gb, g, x0, x1, y0, y1;
+    bx = ax + cc__near_d(w, bx - ax, 0); /* periodic: the image of b next to a */
+    by = ay + cc__near_d(w, by - ay, 1);
     cc__wall_walk walk;
     int s;
     rmax = B[a].r > rmax ? B[a].r : rmax;
@@ -264,7 +267,7 @@ static int cc__still_approaching(const cc_world *w, const cc__touch *t)
     cc_vec2 n;
     if (t->b >= 0) {
         const cc__body *bb = &B[t->b];
-        n = cc__centre_normal(ba, bb, w->now);
+        n = cc__centre_normal(w, ba, bb, w->now);
         vn = (ba->vx - bb->vx) * n.x + (ba->vy - bb->vy) * n.y;
         speeds += fabs(bb->vx) + fabs(bb->vy);
     } else {
@@ -290,7 +293,7 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
             cc_vec2 nw = cc__wall_now(w, touch[i].a, touch[i].segment).normal;
             cc__clu_contact(&c, a, -1, touch[i].segment, nw);
         } else if ((b = cc__clu_body(&c, touch[i].b)) >= 0) {
-            cc__clu_contact(&c, a, b, -1, cc__centre_normal(&B[touch[i].a], &B[touch[i].b], w->now));
+            cc__clu_contact(&c, a, b, -1, cc__centre_normal(c.w, &B[touch[i].a], &B[touch[i].b], w->now));
         }
     }
     cc__clu_gather(&c);
@@ -317,7 +320,7 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
         if (k->b >= 0) {
             const cc__body *bb = &B[c.id[k->b]];
             double ax = cc__bx(ba, w->now), ay = cc__by(ba, w->now);
-            double dx = cc__bx(bb, w->now) - ax, dy = cc__by(bb, w->now) - ay;
+            double dx = cc__near_d(w, cc__bx(bb, w->now) - ax, 0), dy = cc__near_d(w, cc__by(bb, w->now) - ay, 1);
             ev.depth = ba->r + bb->r - sqrt(dx * dx + dy * dy);
             ev.point = cc__v(ax + k->normal.x * (ba->r - 0.5 * ev.depth),
                              ay + k->normal.y * (ba->r - 0.5 * ev.depth));

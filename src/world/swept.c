@@ -41,7 +41,8 @@ static void cc__pair(cc_world *w, int i, int j, double dt)
     int r;
     if (bi->vx == 0.0 && bi->vy == 0.0 && bj->vx == 0.0 && bj->vy == 0.0)
         return;
-    dp = cc__v(bj->px - bi->px, bj->py - bi->py);
+    /* periodic: the nearest image (a step must not carry a body half a period: see the header) */
+    dp = cc__v(cc__near_d(w, bj->px - bi->px, 0), cc__near_d(w, bj->py - bi->py, 1));
     dv = cc__v(bj->vx - bi->vx, bj->vy - bi->vy);
     if (!(cc__dot(dp, dv) < 0.0))
         return;
@@ -116,6 +117,57 @@ static double cc__travel(const cc__body *b, double dt) { return (fabs(b->vx) + f
  * among the cells within r_i + rmax + 2 travel_i, which covers its own motion, not the fastest
  * body's. */
 static int cc__sweeps_from(double di, int i, double dj, int j) { return dj < di || (dj == di && j < i); }
+
+/* The same in a periodic world: the cells around a slow body, or those its reach covers, wrapped
+ * and each once; a pair of slow bodies is swept by the lower index. */
+static void cc__sweep_body_periodic(cc_world *w, int i, double dt, double rmax, double slow)
+{
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+    const cc__body *b = &B[i];
+    double di = cc__travel(b, dt);
+    int64_t lo[2], hi[2], x, y;
+    int j, k;
+    for (j = w->large_head; j >= 0; j = B[j].next)
+        cc__pair(w, i, j, dt);
+    cc__walls(w, i, dt);
+    if (di <= slow) {
+        lo[0] = b->cx - 1, hi[0] = b->cx + 1, lo[1] = b->cy - 1, hi[1] = b->cy + 1;
+    } else {
+        double reach = (b->r + rmax + 2.0 * di) * (1.0 + 0x1p-20) + 0x1p-40 * (fabs(b->px) + fabs(b->py));
+        lo[0] = (int64_t)floor((b->px - reach) * w->inv_cs) - 1, hi[0] = (int64_t)floor((b->px + reach) * w->inv_cs) + 1;
+        lo[1] = (int64_t)floor((b->py - reach) * w->inv_cs) - 1, hi[1] = (int64_t)floor((b->py + reach) * w->inv_cs) + 1;
+    }
+    for (k = 0; k < 2; k++) { /* each cell once: a span of a whole period or more is the period */
+        int64_t n = w->ncell[k] > 0 ? w->ncell[k] : CC__CELL_MAX;
+        if (hi[k] - lo[k] + 1 >= n)
+            lo[k] = 0, hi[k] = n - 1;
+    }
+    if (((double)hi[0] - (double)lo[0] + 1.0) * ((double)hi[1] - (double)lo[1] + 1.0) > 4.0 * (double)w->id_end + 9.0) {
+        const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
+        lo[0] = hi[0] = lo[1] = hi[1] = 0; /* more cells than bodies: every body instead */
+        for (j = 0; j < w->id_end; j++)
+            if ((C[j].flags & (CC__ALIVE | CC__LARGE)) == CC__ALIVE && j != i) {
+                double dj = cc__travel(&B[j], dt);
+                if (dj <= slow && di <= slow ? j > i : cc__sweeps_from(di, i, dj, j))
+                    cc__pair(w, i, j, dt);
+            }
+        return;
+    }
+    for (y = lo[1]; y <= hi[1]; y++)
+        for (x = lo[0]; x <= hi[0]; x++) {
+            double sh;
+            int32_t cx = cc__cell_image(w, x, 0, &sh), cy = cc__cell_image(w, y, 1, &sh);
+            if (di <= slow && (x != (int64_t)b->cx || y != (int64_t)b->cy) && cx == b->cx && cy == b->cy)
+                continue; /* a period of two cells: the own cell again */
+            for (j = slot[cc__grid_slot(w, cx, cy)]; j >= 0; j = B[j].next)
+                if (B[j].cx == cx && B[j].cy == cy && j != i) {
+                    double dj = cc__travel(&B[j], dt);
+                    if (dj <= slow && di <= slow ? j > i : cc__sweeps_from(di, i, dj, j))
+                        cc__pair(w, i, j, dt);
+                }
+        }
+}
 
 /* Body i (in the grid) against the large circles, the circles it sweeps and the walls. */
 static void cc__sweep_body(cc_world *w, int i, double dt, double rmax, double slow)
@@ -200,7 +252,10 @@ static void cc__find_impacts(cc_world *w, double dt)
          * just before (see cc__unoverlap_cells); the outcome does not depend on the order */
         for (s = 0; s <= w->slot_mask; s++)
             for (i = slot[s]; i >= 0; i = B[i].next)
-                cc__sweep_body(w, i, dt, rmax, slow); /* (large circles are immovable: no walls) */
+                if (w->features & CC__F_PERIODIC)
+                    cc__sweep_body_periodic(w, i, dt, rmax, slow);
+                else
+                    cc__sweep_body(w, i, dt, rmax, slow); /* (large circles are immovable: no walls) */
     }
     for (i = 0; i < w->id_end; i++)
         if (ev[i].kind != CC__EV_NONE)

@@ -32,6 +32,8 @@ CC_API void cc_world_def_init(cc_world_def *def)
     def->rolling_decel = 0.0;
     def->restitution_mix = CC_MIX_MIN;
     def->on_sensor = NULL;
+    def->period.x = 0.0;
+    def->period.y = 0.0;
 }
 
 size_t cc__whole_fields(size_t n, const size_t *ends, int count)
@@ -45,6 +47,13 @@ size_t cc__whole_fields(size_t n, const size_t *ends, int count)
 
 #define CC__END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
 
+/* A period: 0 (open), or finite and wider than def.cell_size ("at least twice the largest
+ * diameter plus a cell": the diameters are checked as circles arrive, cc__fits_period). */
+static int cc__period_ok(double p, double cell_hint)
+{
+    return p == 0.0 || (p > 0.0 && isfinite(p) && p > cell_hint);
+}
+
 /* The caller's def over our defaults: fields beyond its struct_size (and a field it cuts) keep
  * their default. */
 static int cc__read_def(const cc_world_def *in, cc_world_def *out)
@@ -56,7 +65,7 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
         CC__END(cc_world_def, cell_size), CC__END(cc_world_def, max_events),
         CC__END(cc_world_def, on_contact), CC__END(cc_world_def, user),
         CC__END(cc_world_def, rolling_decel), CC__END(cc_world_def, restitution_mix),
-        CC__END(cc_world_def, on_sensor)};
+        CC__END(cc_world_def, on_sensor), CC__END(cc_world_def, period)};
     if (in == NULL)
         return CC_ERR_INVALID;
     if (in->struct_size < CC__DEF_MIN)
@@ -70,7 +79,8 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
         !(out->rest_speed >= 0.0 && isfinite(out->rest_speed)) ||
         !(out->cell_size >= 0.0 && isfinite(out->cell_size)) || out->max_events == 0 ||
         !(out->rolling_decel >= 0.0 && isfinite(out->rolling_decel)) || out->restitution_mix < CC_MIX_MIN ||
-        out->restitution_mix > CC_MIX_MEAN)
+        out->restitution_mix > CC_MIX_MEAN || !cc__period_ok(out->period.x, out->cell_size) ||
+        !cc__period_ok(out->period.y, out->cell_size))
         return CC_ERR_INVALID;
     /* where size_t has 32 bits, the capacities must also leave the byte count representable */
     if ((size_t)out->max_circles > (SIZE_MAX - 65536u) / 1024u ||
@@ -86,13 +96,20 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
 #define CC_WORLD_ALIGN 8u
 static size_t cc__align16(size_t n) { return (n + 15u) & ~(size_t)15u; }
 
-/* Hash slots: a power of two >= 2 * max_circles (load <= 1/2), 0 for a world without grid. */
-static uint32_t cc__slots(int max_circles)
+/* A periodic world always has a grid: its cells are how the images of a circle's neighbours
+ * are found. */
+static int cc__uses_grid(const cc_world_def *d)
 {
-    uint32_t s = 1;
-    if (max_circles <= CC__SMALL_WORLD)
+    return d->max_circles > CC__SMALL_WORLD || d->period.x > 0.0 || d->period.y > 0.0;
+}
+
+/* Hash slots: a power of two >= 2 * max_circles (load <= 1/2) and >= 64, 0 for a world without grid. */
+static uint32_t cc__slots(const cc_world_def *d)
+{
+    uint32_t s = 64;
+    if (!cc__uses_grid(d))
         return 0;
-    while (s < 2u * (uint32_t)max_circles)
+    while (s < 2u * (uint32_t)d->max_circles)
         s <<= 1;
     return s;
 }
@@ -111,7 +128,7 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[4] = n * sizeof(int32_t); /* heap positions */
     sizes[5] = n * sizeof(int32_t); /* free ids */
     sizes[6] = n * sizeof(int32_t); /* touched list */
-    sizes[7] = (size_t)cc__slots(d->max_circles) * sizeof(int32_t);
+    sizes[7] = (size_t)cc__slots(d) * sizeof(int32_t);
     sizes[8] = (size_t)d->max_segments * sizeof(cc_segment);
     sizes[9] = n * sizeof(int32_t);  /* id -> index */
     sizes[10] = n * sizeof(int32_t); /* index -> id */
@@ -188,8 +205,12 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
     if (d.restitution_mix == CC_MIX_PRODUCT && d.restitution != 0.0 && d.restitution != 1.0)
         w->features |= CC__F_RESTITUTION; /* even two defaults make e^2, not e */
     w->now = 0.0;
-    w->use_grid = d.max_circles > CC__SMALL_WORLD;
-    w->slot_mask = cc__slots(d.max_circles) - 1u;
+    w->use_grid = cc__uses_grid(&d);
+    w->slot_mask = cc__slots(&d) - 1u;
+    w->period[0] = d.period.x;
+    w->period[1] = d.period.y;
+    if (d.period.x > 0.0 || d.period.y > 0.0)
+        w->features |= CC__F_PERIODIC;
     {
         uint32_t bits = 0;
         while (bits < 31 && (1u << (bits + 1)) <= w->slot_mask + 1u)
@@ -255,6 +276,8 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
 {
     cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
     cc__cold *k = &CC__ARR(w, cc__cold, off_cold)[id];
+    cc__props *p = &CC__ARR(w, cc__props, off_props)[id];
+    p->wrap[0] = p->wrap[1] = 0; /* where it is put is its unwrapped position (cc__wrap_body) */
     b->px = c->pos.x;
     b->py = c->pos.y;
     b->vx = c->vel.x;
@@ -283,10 +306,22 @@ static void cc__put_guarded(cc_world *w, int id, const cc_circle *c)
     w->busy = 0;
 }
 
+/* Periodic: a circle must leave room for its images ("at least twice the largest diameter plus
+ * a cell" along each periodic axis; the cell is at least 1.0625 diameters, or def.cell_size). */
+static int cc__fits_period(const cc_world *w, const cc_circle *c)
+{
+    double d = 2.0 * c->radius, cell = 1.0625 * d > w->cell_hint ? 1.0625 * d : w->cell_hint;
+    int k;
+    for (k = 0; k < 2; k++)
+        if (w->period[k] > 0.0 && !(2.0 * d + cell <= w->period[k]))
+            return 0;
+    return 1;
+}
+
 CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
 {
     int id;
-    if (!cc__world_ok(w) || w->busy || !cc__circle_ok(c))
+    if (!cc__world_ok(w) || w->busy || !cc__circle_ok(c) || !cc__fits_period(w, c))
         return CC_ERR_INVALID;
     if (w->n_circles >= w->max_circles)
         return CC_ERR_FULL;
@@ -318,7 +353,7 @@ static void cc__unfile(cc_world *w, int id)
 CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c)
 {
     int k;
-    if (!cc__world_ok(w) || w->busy || !cc__circle_ok(c))
+    if (!cc__world_ok(w) || w->busy || !cc__circle_ok(c) || !cc__fits_period(w, c))
         return CC_ERR_INVALID;
     if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
@@ -364,6 +399,13 @@ static void cc__get(const cc_world *w, int id, cc_circle *out)
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[id];
     out->pos.x = cc__bx(b, w->now);
     out->pos.y = cc__by(b, w->now);
+    if (w->features & CC__F_PERIODIC) { /* within the period, where its lazy state may have left it */
+        int32_t turns;
+        if (w->period[0] > 0.0)
+            out->pos.x = cc__wrap_coord(w, out->pos.x, 0, &turns);
+        if (w->period[1] > 0.0)
+            out->pos.y = cc__wrap_coord(w, out->pos.y, 1, &turns);
+    }
     out->vel.x = b->vx;
     out->vel.y = b->vy;
     out->radius = b->r;
@@ -378,6 +420,22 @@ CC_API int cc_world_get_circle(const cc_world *w, int id, cc_circle *out)
     if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
     cc__get(w, k, out);
+    return CC_OK;
+}
+
+CC_API int cc_world_get_unwrapped(const cc_world *w, int id, cc_vec2 *out)
+{
+    const cc__body *b;
+    const cc__props *p;
+    int k;
+    if (!cc__world_ok(w) || out == NULL)
+        return CC_ERR_INVALID;
+    if ((k = cc__live(w, id)) < 0)
+        return CC_ERR_NOT_FOUND;
+    b = &CC__CARR(w, cc__body, off_body)[k];
+    p = &CC__CARR(w, cc__props, off_props)[k];
+    out->x = cc__bx(b, w->now) + (double)p->wrap[0] * w->period[0];
+    out->y = cc__by(b, w->now) + (double)p->wrap[1] * w->period[1];
     return CC_OK;
 }
 
@@ -434,7 +492,8 @@ CC_API int cc_world_get_stats(const cc_world *w, cc_world_stats *out)
         CC__END(cc_world_stats, struct_size), CC__END(cc_world_stats, collisions),
         CC__END(cc_world_stats, events), CC__END(cc_world_stats, stale_events),
         CC__END(cc_world_stats, pairs_tested), CC__END(cc_world_stats, cell_crossings),
-        CC__END(cc_world_stats, max_overlap)};
+        CC__END(cc_world_stats, max_overlap), CC__END(cc_world_stats, virial),
+        CC__END(cc_world_stats, wall_impulse)};
     const size_t from = sizeof out->struct_size; /* the caller's struct_size is kept */
     size_t n;
     if (!cc__world_ok(w) || out == NULL)

@@ -40,6 +40,7 @@ typedef struct cc__props {
     uint32_t category, mask;
     int32_t sensor;     /* its sensor slot, or -1 */
     int32_t pad_;
+    int32_t wrap[2];    /* periodic axes: how many periods it has crossed (+ along the axis) */
 } cc__props;
 
 typedef struct cc__segment_props {
@@ -53,7 +54,8 @@ typedef struct cc__segment_props {
 #define CC__F_FILTER 2      /* some category or mask differs from the defaults */
 #define CC__F_SENSOR 4      /* some circle is or was a sensor */
 #define CC__F_ROLL 8        /* some circle decelerates */
-#define CC__F_PREDICT (CC__F_FILTER | CC__F_SENSOR | CC__F_ROLL) /* what predictions must read */
+#define CC__F_PERIODIC 16   /* the world wraps along an axis (def.period) */
+#define CC__F_PREDICT (CC__F_FILTER | CC__F_SENSOR | CC__F_ROLL | CC__F_PERIODIC) /* what predictions read */
 
 #define CC__ALIVE 1
 #define CC__LARGE 2  /* wider than a grid cell (immovable only): kept on the large list */
@@ -71,6 +73,8 @@ typedef struct cc__segment_props {
  * through which side (dir 0:+x 1:-x 2:+y 3:-y). The hit is searched without a time limit among
  * the circles of the 3x3 cells, so that on a crossing only the newly adjacent cells need a look;
  * walls are searched up to min(hit, crossing) and looked at again after each crossing. */
+#define CC__DIR_AGAIN 4 /* t_cross is no crossing: the body looks again then (periodic, large) */
+
 typedef struct cc__event {
     double t;       /* absolute time of the hit, +INFINITY when none */
     double t_cross; /* absolute time of the cell crossing, +INFINITY when none */
@@ -106,6 +110,9 @@ struct cc_world {
     cc_sensor_fn on_sensor;
     double rolling_decel;
     int mix;          /* restitution_mix */
+    double period[2]; /* > 0: the world wraps along that axis with that period; 0: open */
+    int32_t ncell[2]; /* along a periodic axis: its cells (the last one takes what the period
+                         leaves over: [(n - 1) cs, period)); 0 along an open axis */
     int features;     /* CC__F_* */
     uint64_t sensor_slots;             /* slots in use */
     int32_t sensor_id[CC_MAX_SENSORS]; /* the circle id of each slot's sensor */
@@ -167,6 +174,66 @@ static inline void cc__body_pos(const cc_world *w, int j, double t, double *x, d
     *x = cc__bx(b, t);
     *y = cc__by(b, t);
 }
+/* ---- periodic axes (issue 15) ---- */
+/* d (a difference of coordinates along axis k) as its nearest image: |d| <= period / 2. One
+ * correction is enough: coordinates are kept within a period (to rounding). */
+static inline double cc__near_d(const cc_world *w, double d, int k)
+{
+    double P = w->period[k];
+    if (P > 0.0) {
+        if (d > 0.5 * P)
+            d -= P;
+        else if (d < -0.5 * P)
+            d += P;
+    }
+    return d;
+}
+/* The shift that takes b's coordinate along axis k to its image nearest a's. */
+static inline double cc__near_shift(const cc_world *w, double a, double b, int k)
+{
+    return cc__near_d(w, b - a, k) - (b - a);
+}
+/* Moves point b to its image nearest point a (periodic worlds; else it stays). */
+static inline void cc__near_image(const cc_world *w, cc_vec2 a, cc_vec2 *b)
+{
+    if (w->features & CC__F_PERIODIC) {
+        b->x += cc__near_shift(w, a.x, b->x, 0);
+        b->y += cc__near_shift(w, a.y, b->y, 1);
+    }
+}
+/* A logical cell u along axis k (cells numbered on through the periods: u = n * image + cell)
+ * as the cell it is and the shift of its image. Along an open axis u is the cell. */
+static inline int32_t cc__cell_image(const cc_world *w, int64_t u, int k, double *shift)
+{
+    int64_t n = w->ncell[k], q;
+    *shift = 0.0;
+    if (n == 0)
+        return (int32_t)u;
+    q = u >= 0 ? u / n : -((-u + n - 1) / n); /* floor(u / n) */
+    *shift = (double)q * w->period[k];
+    return (int32_t)(u - q * n);
+}
+/* The 3 x 3 cells around (cx, cy), as cells of a periodic world's grid: wrapped, each once (a
+ * period may hold only two cells). Writes them to xs[], ys[] and returns how many (<= 9). */
+static inline int cc__cells_around(const cc_world *w, int32_t cx, int32_t cy, int32_t *xs, int32_t *ys)
+{
+    int n = 0, a, b, k;
+    for (b = -1; b <= 1; b++)
+        for (a = -1; a <= 1; a++) {
+            double s;
+            int32_t x = cc__cell_image(w, (int64_t)cx + a, 0, &s), y = cc__cell_image(w, (int64_t)cy + b, 1, &s);
+            for (k = 0; k < n && (xs[k] != x || ys[k] != y); k++)
+                ;
+            if (k == n) {
+                xs[n] = x;
+                ys[n++] = y;
+            }
+        }
+    return n;
+}
+/* Coordinate x wrapped into [0, period) along a periodic axis k, exactly (fmod is exact); the
+ * number of periods taken off goes to *turns. */
+double cc__wrap_coord(const cc_world *w, double x, int k, int32_t *turns);
 /* Grid cell size for the current circles (>= largest movable diameter). */
 double cc__world_cell_size(const cc_world *w);
 
@@ -180,8 +247,9 @@ double cc__heap_top_key(const cc_world *w); /* +INFINITY when empty */
 void cc__grid_clear(cc_world *w);
 void cc__grid_insert(cc_world *w, int id); /* files the body by its position at w->now */
 void cc__grid_remove(cc_world *w, int id);
-void cc__grid_move(cc_world *w, int id, int dir); /* a cell crossing */
-int32_t cc__grid_coord(const cc_world *w, double x);
+void cc__grid_move(cc_world *w, int id, int dir); /* a cell crossing (through a period's edge too) */
+void cc__wrap_body(cc_world *w, int id); /* periodic: carried to now, coordinates within the period */
+int32_t cc__grid_coord(const cc_world *w, double x, int axis);
 /* The table of S = 2^k slots is laid over the plane as tiles of W x H cells (W * H = S, rows of
  * W consecutive slots), so that a compact scene of fewer cells than slots maps its cells to
  * distinct slots and the 3x3 cells around a circle share three runs of slots; each tile starts
@@ -297,9 +365,10 @@ void cc__sensor_refresh(cc_world *w, int i);
 /* Circle i is removed or stops being a sensor: its overlaps are forgotten (nothing reported
  * when `quiet`, else an end for each). */
 void cc__sensor_forget(cc_world *w, int i, int quiet);
-/* EXACT: when the sensor pair i-j (one a sensor, the other an admitted visitor) next begins or
- * ends overlapping, at or after w->now: +INFINITY when never. Both at w->now. */
-double cc__sensor_next(const cc_world *w, int i, int j);
+/* EXACT: when the sensor pair i-j (one a sensor, the other an admitted visitor; j's image shifted
+ * by (sx, sy) in a periodic world) next begins or ends overlapping, at or after w->now:
+ * +INFINITY when never. Both at w->now. */
+double cc__sensor_next(const cc_world *w, int i, int j, double sx, double sy);
 /* EXACT: whether the sensor pair i-j overlaps now by the world's account (its membership). */
 int cc__sensor_inside(const cc_world *w, int i, int j);
 /* EXACT: the predicted sensor event of i with j (kind CC__EV_BEGIN or CC__EV_END) is due now:
