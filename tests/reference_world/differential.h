@@ -23,8 +23,8 @@ typedef enum dw_end {
     DW_END_DONE = 0,     /* every step compared, or the event budget reached */
     DW_END_TIE,          /* a near tie, graze or threshold approach: rounding may reorder */
     DW_END_DIVERGED,     /* states apart by more than rounding after a legitimate doubt */
-    DW_END_JAMMED,       /* a step hit the event cap: a circle squeezed by a kinematic body (the
-                            header's "impossible scene"), whose events never end */
+    DW_END_JAMMED,       /* the reference hit its cap of impacts in a step: a circle squeezed by a
+                            kinematic body (the header's "impossible scene"), whose events never end */
     DW_END_FAILED,       /* a difference nothing explains: a bug */
     DW_END_COUNT
 } dw_end;

@@ -22,11 +22,59 @@ static cc_vec2 v2(double x, double y)
     return v;
 }
 
+/* "Periodic boxes": position b moved to its image nearest position a (a difference of less
+ * than a period either way: positions are kept within the period). */
+static cc_vec2 near_image(const rw_world *w, cc_vec2 a, cc_vec2 b)
+{
+    int k;
+    for (k = 0; k < 2; k++) {
+        double P = w->period[k], *x = k ? &b.y : &b.x, d = *x - (k ? a.y : a.x);
+        if (P > 0.0 && d > 0.5 * P)
+            *x -= P;
+        else if (P > 0.0 && d < -0.5 * P)
+            *x += P;
+    }
+    return b;
+}
+
+/* A coordinate within [0, period), as the world keeps them (fmod is exact). */
+static double wrap(double x, double P)
+{
+    double r = fmod(x, P);
+    if (r < 0.0)
+        r += P;
+    return r >= P ? 0.0 : r;
+}
+
+/* "Periodic boxes": every position within its period. */
+static void wrap_all(rw_world *w)
+{
+    int i;
+    for (i = 0; i < w->id_end; i++)
+        if (w->body[i].alive) {
+            if (w->period[0] > 0.0)
+                w->body[i].c.pos.x = wrap(w->body[i].c.pos.x, w->period[0]);
+            if (w->period[1] > 0.0)
+                w->body[i].c.pos.y = wrap(w->body[i].c.pos.y, w->period[1]);
+        }
+}
+
 static double inf_norm(cc_vec2 v) { return fabs(v.x) > fabs(v.y) ? fabs(v.x) : fabs(v.y); }
 static double l1(cc_vec2 v) { return fabs(v.x) + fabs(v.y); }
 static double dot(cc_vec2 a, cc_vec2 b) { return a.x * b.x + a.y * b.y; }
 static cc_vec2 sub(cc_vec2 a, cc_vec2 b) { return v2(a.x - b.x, a.y - b.y); }
 static int at_rest(const cc_circle *c) { return c->vel.x == 0.0 && c->vel.y == 0.0; }
+
+/* "Periodic boxes": at least twice the diameter plus a cell along each periodic axis. */
+static int fits_period(const rw_world *w, const cc_circle *c)
+{
+    double d = 2.0 * c->radius, cell = 1.0625 * d > w->cell_hint ? 1.0625 * d : w->cell_hint;
+    int k;
+    for (k = 0; k < 2; k++)
+        if (w->period[k] > 0.0 && !(2.0 * d + cell <= w->period[k]))
+            return 0;
+    return 1;
+}
 
 static int circle_ok(const cc_circle *c)
 {
@@ -168,7 +216,8 @@ static void sensors_sync(rw_world *w)
         for (v = 0; v < w->id_end; v++) {
             int in = 0;
             if (senses(w, s, v)) {
-                cc_vec2 d = v2(w->body[v].c.pos.x - w->body[s].c.pos.x, w->body[v].c.pos.y - w->body[s].c.pos.y);
+                cc_vec2 pv = near_image(w, w->body[s].c.pos, w->body[v].c.pos);
+                cc_vec2 d = v2(pv.x - w->body[s].c.pos.x, pv.y - w->body[s].c.pos.y);
                 double R = w->body[s].c.radius + w->body[v].c.radius, gap = sqrt(d.x * d.x + d.y * d.y) - R;
                 in = d.x * d.x + d.y * d.y < R * R;
                 if (fabs(gap) <= 1e-9 * R) /* touching: overlapping or not is rounding's */
@@ -200,8 +249,11 @@ static int resolve_pair(rw_world *w, int a, int b, int seg)
     cc_circle na = *ca;
     cc_contact k;
     if (b >= 0) {
-        cc_circle *cb = &w->body[b].c, nb = *cb;
-        cc_vec2 d = sub(cb->pos, ca->pos);
+        cc_circle image = w->body[b].c, *cb = &image, nb;
+        cc_vec2 d;
+        image.pos = near_image(w, ca->pos, image.pos);
+        nb = image;
+        d = sub(cb->pos, ca->pos);
         k.t = 0.0;
         k.normal = centre_normal(ca->pos, cb->pos);
         k.depth = ca->radius + cb->radius - sqrt(d.x * d.x + d.y * d.y);
@@ -213,7 +265,7 @@ static int resolve_pair(rw_world *w, int a, int b, int seg)
         report(w, a, b, -1, k.point, k.normal,
                isinf(ca->mass) ? cb->mass * speed_change(nb.vel, cb->vel) : ca->mass * speed_change(na.vel, ca->vel));
         ca->vel = na.vel;
-        cb->vel = nb.vel;
+        w->body[b].c.vel = nb.vel;
         return 1;
     }
     k = wall_contact(ca, &w->seg[seg]);
@@ -287,11 +339,11 @@ static void clu_gather(const rw_world *w, rw_clu *c)
             if (!w->body[j].alive || j == c->id[from] || (isinf(k->mass) && isinf(q->mass)) ||
                 !interact(w, c->id[from], j))
                 continue;
-            d = sub(q->pos, k->pos);
+            d = sub(near_image(w, k->pos, q->pos), k->pos);
             if (sqrt(d.x * d.x + d.y * d.y) - (k->radius + q->radius) > clu_tol(w, k, q->radius, q->pos, q->vel))
                 continue;
             if ((i = clu_body(w, c, j)) >= 0)
-                clu_contact(w, c, from, i, -1, centre_normal(k->pos, q->pos));
+                clu_contact(w, c, from, i, -1, centre_normal(k->pos, near_image(w, k->pos, q->pos)));
         }
         for (s = 0; s < w->n_segments; s++) {
             cc_contact kk = wall_contact(k, &w->seg[s]);
@@ -321,7 +373,8 @@ static int still_approaching(const rw_world *w, int a, int b, int seg)
     const cc_circle *ca = &w->body[a].c;
     if (b >= 0) {
         const cc_circle *cb = &w->body[b].c;
-        return approaching(w, dot(sub(ca->vel, cb->vel), centre_normal(ca->pos, cb->pos)), l1(ca->vel) + l1(cb->vel));
+        return approaching(w, dot(sub(ca->vel, cb->vel), centre_normal(ca->pos, near_image(w, ca->pos, cb->pos))),
+                           l1(ca->vel) + l1(cb->vel));
     }
     return approaching(w, dot(ca->vel, wall_contact(ca, &w->seg[seg]).normal), l1(ca->vel));
 }
@@ -337,7 +390,7 @@ static int resolve_cluster(rw_world *w, int a, int b, int seg)
     if (b < 0)
         clu_contact(w, &c, ia, -1, seg, wall_contact(&w->body[a].c, &w->seg[seg]).normal);
     else if ((ib = clu_body(w, &c, b)) >= 0)
-        clu_contact(w, &c, ia, ib, -1, centre_normal(w->body[a].c.pos, w->body[b].c.pos));
+        clu_contact(w, &c, ia, ib, -1, centre_normal(w->body[a].c.pos, near_image(w, w->body[a].c.pos, w->body[b].c.pos)));
     clu_gather(w, &c);
     for (i = 0; i < c.nc; i++) { /* how close each contact is to neither approaching nor parting */
         const cc__cluster_contact *k = &c.contact[i];
@@ -362,7 +415,7 @@ static int resolve_cluster(rw_world *w, int a, int b, int seg)
             continue;
         if (k->b >= 0) {
             const cc_circle *kb = &w->body[c.id[k->b]].c;
-            cc_vec2 d = sub(kb->pos, ka->pos);
+            cc_vec2 d = sub(near_image(w, ka->pos, kb->pos), ka->pos);
             double depth = ka->radius + kb->radius - sqrt(d.x * d.x + d.y * d.y);
             point = v2(ka->pos.x + k->normal.x * (ka->radius - 0.5 * depth),
                        ka->pos.y + k->normal.y * (ka->radius - 0.5 * depth));
@@ -395,11 +448,15 @@ static void unoverlap(rw_world *w, int a, int b, int seg)
     if (b >= 0 ? !interact(w, a, b) : !wall_interacts(w, a, seg))
         return; /* they pass through each other */
     if (b >= 0) {
-        cc_circle *cb = &w->body[b].c;
+        cc_circle *cb = &w->body[b].c, image = *cb;
+        cc_vec2 shift;
         if (isinf(ca->mass) && isinf(cb->mass))
             return;
-        if (cc_detect_static(ca, cb, NULL) != CC_OVERLAP || cc_separate(ca, cb) != CC_OVERLAP)
+        image.pos = near_image(w, ca->pos, cb->pos);
+        shift = sub(image.pos, cb->pos);
+        if (cc_detect_static(ca, &image, NULL) != CC_OVERLAP || cc_separate(ca, &image) != CC_OVERLAP)
             return;
+        cb->pos = sub(image.pos, shift); /* the image's shift taken off again */
     } else {
         cc_contact k;
         if (isinf(ca->mass))
@@ -416,13 +473,20 @@ static void unoverlap(rw_world *w, int a, int b, int seg)
 /* A circle added or set on top of others: pushed out of each, then out of the walls. A push
  * that leaves either circle overlapping a third makes the outcome depend on the order of the
  * pushes, which is the world's to choose: a doubt. */
+/* Whether circles i and k overlap now (through the nearest image). */
+static int overlap_now(const rw_world *w, int i, int k)
+{
+    cc_circle image = w->body[k].c;
+    image.pos = near_image(w, w->body[i].c.pos, image.pos);
+    return cc_detect_static(&w->body[i].c, &image, NULL) == CC_OVERLAP;
+}
+
 /* How many interacting circles (circle `but` aside) and walls circle i overlaps. */
 static int overlaps_except(const rw_world *w, int i, int but)
 {
     int k, n = 0;
     for (k = 0; k < w->id_end; k++)
-        n += k != i && k != but && w->body[k].alive && interact(w, i, k) &&
-             cc_detect_static(&w->body[i].c, &w->body[k].c, NULL) == CC_OVERLAP;
+        n += k != i && k != but && w->body[k].alive && interact(w, i, k) && overlap_now(w, i, k);
     for (k = 0; k < w->n_segments; k++)
         n += wall_interacts(w, i, k) && !isinf(w->body[i].c.mass) && wall_contact(&w->body[i].c, &w->seg[k]).depth > 0.0;
     return n;
@@ -499,7 +563,9 @@ int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, rw_senso
     w->on_sensor = on_sensor;
     w->user = user;
     w->mix = def->restitution_mix;
-    w->use_grid = def->max_circles > 32;
+    w->use_grid = def->max_circles > 32 || def->period.x > 0.0 || def->period.y > 0.0;
+    w->period[0] = def->period.x;
+    w->period[1] = def->period.y;
     w->cell_hint = def->cell_size;
     w->rolling_decel = def->rolling_decel;
     return CC_OK;
@@ -509,7 +575,7 @@ int rw_add_circle(rw_world *w, const cc_circle *c)
 {
     int id;
     new_call(w);
-    if (w->busy || !circle_ok(c))
+    if (w->busy || !circle_ok(c) || !fits_period(w, c))
         return CC_ERR_INVALID;
     if (w->id_end - w->free_top >= w->max_circles)
         return CC_ERR_FULL;
@@ -523,6 +589,7 @@ int rw_add_circle(rw_world *w, const cc_circle *c)
     w->body[id].props.mask = 0xFFFFFFFFu;
     w->body[id].props.sensor = 0;
     defer_if_wide(w, c);
+    wrap_all(w);
     if (!w->dirty) {
         w->busy = 1;
         settle(w, id);
@@ -551,12 +618,13 @@ int rw_remove_circle(rw_world *w, int id)
 int rw_set_circle(rw_world *w, int id, const cc_circle *c)
 {
     new_call(w);
-    if (w->busy || !circle_ok(c))
+    if (w->busy || !circle_ok(c) || !fits_period(w, c))
         return CC_ERR_INVALID;
     if (id < 0 || id >= w->id_end || !w->body[id].alive)
         return CC_ERR_NOT_FOUND;
     w->body[id].c = *c;
     defer_if_wide(w, c);
+    wrap_all(w);
     if (!w->dirty) {
         w->busy = 1;
         settle(w, id);
@@ -663,6 +731,7 @@ static void advance_all(rw_world *w, double t)
             c->pos.y += c->vel.y * (t - w->now);
         }
     w->now = t;
+    wrap_all(w);
 }
 
 /* Offers a candidate event; keeps the earliest and the next distinct time behind it. */
@@ -683,12 +752,15 @@ static void offer(rw_cand *best, double *second, double t, int a, int b, int seg
 /* "Sensors": when sensor s and visitor v next begin or stop overlapping, from now (absolute;
  * +INF for never). Within 2^-40 of the numbers involved, the boundary is rounding's and the
  * membership decides, as in the world. */
-static double sensor_next(const rw_world *w, int s, int v)
+static double sensor_next(const rw_world *w, int s, int v, cc_vec2 shift)
 {
     const cc_circle *a = &w->body[s].c, *b = &w->body[v].c;
-    cc_vec2 dp = sub(b->pos, a->pos), dv = sub(b->vel, a->vel);
+    cc_vec2 bp = v2(b->pos.x + shift.x, b->pos.y + shift.y), dp = sub(bp, a->pos), dv = sub(b->vel, a->vel);
     double R = a->radius + b->radius, d = sqrt(dot(dp, dp)), vv = dot(dv, dv), bb = dot(dp, dv);
-    double tol = 0x1p-40 * (l1(a->pos) + l1(b->pos) + R + (l1(a->vel) + l1(b->vel)) * fabs(w->now));
+    double tol = 0x1p-40 * (l1(a->pos) + l1(bp) + R + (l1(a->vel) + l1(b->vel)) * fabs(w->now));
+    cc_vec2 nearest = near_image(w, a->pos, bp);
+    if (w->inside[s][v] && (nearest.x != bp.x || nearest.y != bp.y))
+        return HUGE_VAL; /* inside through its nearest image: this one ends nothing */
     if (w->inside[s][v]) {
         double h, q, disc, c, t;
         if (d - R > tol)
@@ -707,7 +779,9 @@ static double sensor_next(const rw_world *w, int s, int v)
         cc_contact k;
         if (d - R < -tol)
             return w->now;
-        switch (cc_sweep(a, b, HUGE_VAL, &k)) {
+        cc_circle bi = *b;
+        bi.pos = bp;
+        switch (cc_sweep(a, &bi, HUGE_VAL, &k)) {
         case CC_HIT: return w->now + k.t;
         case CC_OVERLAP: return bb < 0.0 ? w->now : HUGE_VAL;
         default: return HUGE_VAL;
@@ -720,7 +794,7 @@ static rw_cand next_event(rw_world *w, double t_end)
 {
     rw_cand best;
     double second = HUGE_VAL, h = t_end - w->now;
-    int i, j, s;
+    int i, j, s, img;
     best.t = HUGE_VAL;
     best.a = best.b = best.seg = -1;
     best.sensor = 0;
@@ -728,17 +802,28 @@ static rw_cand next_event(rw_world *w, double t_end)
         const cc_circle *ci = &w->body[i].c;
         if (!w->body[i].alive)
             continue;
-        for (j = i + 1; j < w->id_end; j++) {
-            const cc_circle *cj = &w->body[j].c;
+        for (j = i + 1; j < w->id_end; j++)
+            for (img = 0; img < 9; img++) {
+            /* "Periodic boxes": every image of j within a period either way (the search's horizon
+             * keeps every body within a quarter period of where it is) */
+            int ix = img % 3 - 1, iy = img / 3 - 1;
+            cc_circle image;
+            const cc_circle *cj = &image;
             cc_contact k;
             cc_vec2 dp, dv;
             double vv, vn, speeds;
             int r;
+            if ((ix != 0 && !(w->period[0] > 0.0)) || (iy != 0 && !(w->period[1] > 0.0)))
+                continue;
+            image = w->body[j].c;
+            image.pos.x += ix * w->period[0];
+            image.pos.y += iy * w->period[1];
             if (!w->body[j].alive || (at_rest(ci) && at_rest(cj)))
                 continue;
             if (senses(w, i, j) || senses(w, j, i)) {
                 int sn = senses(w, i, j) ? i : j;
-                double ts = sensor_next(w, sn, sn == i ? j : i);
+                cc_vec2 sh = v2(ix * w->period[0], iy * w->period[1]);
+                double ts = sensor_next(w, sn, sn == i ? j : i, sn == i ? sh : v2(-sh.x, -sh.y));
                 if (ts <= t_end)
                     offer(&best, &second, ts, sn, sn == i ? j : i, -1, 1);
             }
@@ -806,6 +891,21 @@ static rw_cand next_event(rw_world *w, double t_end)
     return best;
 }
 
+/* "Periodic boxes": how far ahead to search, so that no body travels a quarter period (then the
+ * images one period either way are all that can be met). */
+static double horizon(const rw_world *w, double t_end)
+{
+    double t = t_end;
+    int i, k;
+    for (i = 0; i < w->id_end; i++)
+        for (k = 0; k < 2; k++) {
+            double v = fabs(k ? w->body[i].c.vel.y : w->body[i].c.vel.x);
+            if (w->body[i].alive && w->period[k] > 0.0 && v > 0.0 && w->now + 0.25 * w->period[k] / v < t)
+                t = w->now + 0.25 * w->period[k] / v;
+        }
+    return t;
+}
+
 int rw_step(rw_world *w, double dt)
 {
     double t_end;
@@ -844,9 +944,15 @@ int rw_step(rw_world *w, double dt)
         w->dirty = 0;
     }
     for (done = 0;; done++) {
-        rw_cand e = next_event(w, t_end);
-        if (!(e.t <= t_end))
-            break;
+        double t_lim = horizon(w, t_end);
+        rw_cand e = next_event(w, t_lim);
+        if (!(e.t <= t_lim)) {
+            if (t_lim >= t_end)
+                break;
+            advance_all(w, t_lim); /* nothing within a quarter period: on, and look again */
+            done--;
+            continue;
+        }
         if (done == w->max_events) { /* "Collapse": the step stops at the cap */
             w->busy = 0;
             return CC_EVENT_LIMIT;

@@ -57,6 +57,7 @@ typedef struct rw_world {
     int mix;
     double rolling_decel;
     int use_grid;     /* "a world with max_circles <= 32 tests all pairs and has no grid" */
+    double period[2]; /* "Periodic boxes": > 0 wraps along that axis */
     double cs, cell_hint; /* "Cells": the cell size of the last rebuild, def.cell_size */
     unsigned char inside[RW_MAX_CIRCLES][RW_MAX_CIRCLES]; /* [sensor][visitor]: they overlap */
     rw_event_fn on_event;
