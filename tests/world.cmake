@@ -9,6 +9,7 @@ cc_add_test(NAME test_world_near SOURCES test_world_near.c LABELS world)
 cc_add_test(NAME test_world_reentry SOURCES test_world_reentry.c LABELS world)
 cc_add_test(NAME test_world_props SOURCES test_world_props.c LABELS world)
 cc_add_test(NAME test_world_queries SOURCES test_world_queries.c LABELS world)
+cc_add_test(NAME test_world_periodic SOURCES test_world_periodic.c LABELS world)
 cc_add_test(NAME test_world_soak SOURCES test_world_soak.c LABELS world TIMEOUT 300)
 # The world against the plain reference simulator (issue 11): 10,000 random scenes against the
 # reference and 2,000 all-pairs against grid (about 12 s optimised, so labelled slow: the ASan
