@@ -26,7 +26,8 @@ static int cc__impact_pair(cc_world *w, const cc__touch *tc)
     uint64_t tested;
     cc_world_stats stats;
     cc_contact k;
-    if (b < 0 || w->clu_bodies < 2 || w->dirty || w->n_touched != 0 || isinf(C[a].m) || isinf(C[b].m))
+    if (b < 0 || w->clu_bodies < 2 || w->dirty || w->n_touched != 0 || isinf(C[a].m) || isinf(C[b].m) ||
+        (w->features & CC__F_ROLL)) /* (what it puts back would have to include the rolling state) */
         return 0;
     if (cc__cluster_pair_reach(w, a, b, &reach_a, &reach_b))
         return 0;
@@ -108,15 +109,20 @@ int cc__step_exact(cc_world *w, double t_end)
         e = &EV[i];
         if (t > w->now)
             w->now = t;
-        cc__advance_body(&B[i], w->now);
+        cc__advance_body(w, &B[i], w->now);
         if (e->t_cross < e->t) {
             int dir = e->dir;
-            w->stats.cell_crossings++;
             if (dir == CC__DIR_AGAIN) { /* a large body of a periodic world: anew, within the period */
                 cc__wrap_body(w, i);
                 cc__predict(w, i);
                 continue;
             }
+            if (dir == CC__DIR_STOP) { /* a rolling body at rest: it predicts nothing from here on */
+                cc__roll_stop(w, i);
+                cc__predict(w, i);
+                continue;
+            }
+            w->stats.cell_crossings++;
             cc__grid_move(w, i, dir);
             cc__predict_crossed(w, i, dir);
         } else if (e->kind != CC__EV_SEGMENT) { /* a circle, or a sensor pair's begin or end */
@@ -126,7 +132,7 @@ int cc__step_exact(cc_world *w, double t_end)
                 cc__predict(w, i);
                 continue;
             }
-            cc__advance_body(&B[j], w->now);
+            cc__advance_body(w, &B[j], w->now);
             if (e->kind != CC__EV_CIRCLE) { /* no trajectory changes: the body looks ahead again */
                 if (!cc__sensor_event(w, i, j, e->kind))
                     w->stats.stale_events++; /* the other body of the pair reported it first */

@@ -56,8 +56,8 @@ void cc__grid_insert(cc_world *w, int id)
         k->flags |= CC__LARGE;
     if (w->features & CC__F_PERIODIC)
         cc__wrap_body(w, id); /* its coordinates within the period, where its cell is */
-    b->cx = cc__grid_coord(w, cc__bx(b, w->now), 0);
-    b->cy = cc__grid_coord(w, cc__by(b, w->now), 1);
+    b->cx = cc__grid_coord(w, cc__bx(w, b, w->now), 0);
+    b->cy = cc__grid_coord(w, cc__by(w, b, w->now), 1);
     cc__link(w, id, cc__head_of(w, id));
 }
 
@@ -109,7 +109,7 @@ void cc__wrap_body(cc_world *w, int id)
     cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
     cc__props *p = &CC__ARR(w, cc__props, off_props)[id];
     int k;
-    cc__advance_body(b, w->now);
+    cc__advance_body(w, b, w->now);
     for (k = 0; k < 2; k++) {
         double *x = k ? &b->py : &b->px;
         int32_t turns;

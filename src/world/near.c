@@ -19,8 +19,8 @@ static int cc__near_interacts(const cc_world *w, int k, int j)
 /* Circle j within tol of the circle of radius kr at (kx, ky) at w->now. */
 static int cc__touching_circle(const cc_world *w, const cc__body *bj, double kx, double ky, double kr, double tol)
 {
-    double dx = cc__near_d(w, cc__bx(bj, w->now) - kx, 0);
-    double dy = cc__near_d(w, cc__by(bj, w->now) - ky, 1);
+    double dx = cc__near_d(w, cc__bx(w, bj, w->now) - kx, 0);
+    double dy = cc__near_d(w, cc__by(w, bj, w->now) - ky, 1);
     double R = kr + bj->r + tol;
     return dx * dx + dy * dy <= R * R;
 }
@@ -30,7 +30,7 @@ int cc__world_touching(const cc_world *w, int k, double tol, cc__touch_visit vis
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
-    const double kx = cc__bx(&B[k], w->now), ky = cc__by(&B[k], w->now), kr = B[k].r, reach = kr + tol;
+    const double kx = cc__bx(w, &B[k], w->now), ky = cc__by(w, &B[k], w->now), kr = B[k].r, reach = kr + tol;
     cc__wall_walk walk;
     int j, s, n = 0;
     if (w->mode != CC_MODE_EXACT || w->dirty || !w->use_grid || (C[k].flags & CC__LARGE)) {

@@ -41,7 +41,7 @@ static inline int cc__circles_apart(const cc_world *w, const cc__body *a, const 
 static void cc__unoverlap_pair(cc_world *w, int i, int j)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
-    cc__advance_body(&B[j], w->now);
+    cc__advance_body(w, &B[j], w->now);
     w->stats.pairs_tested++;
     if (!cc__circles_apart(w, &B[i], &B[j]))
         (void)cc__world_unoverlap(w, i, j, -1);
@@ -128,7 +128,7 @@ static void cc__file_all(cc_world *w)
         if (w->features & CC__F_PERIODIC)
             cc__wrap_body(w, i); /* carried to now, within the period */
         else
-            cc__advance_body(b, w->now);
+            cc__advance_body(w, b, w->now);
         b->cx = w->ncell[0] ? cc__grid_coord(w, b->px, 0) : cc__cell_of(w, b->px);
         b->cy = w->ncell[1] ? cc__grid_coord(w, b->py, 1) : cc__cell_of(w, b->py);
         C[i].flags &= ~CC__LARGE;
@@ -207,7 +207,7 @@ void cc__rebuild(cc_world *w)
             hpos[i] = -1;
             if (!(C[i].flags & CC__ALIVE))
                 continue;
-            cc__advance_body(&B[i], w->now);
+            cc__advance_body(w, &B[i], w->now);
             cc__grid_insert(w, i);
         }
         for (i = 0; i < w->id_end; i++)
@@ -276,7 +276,9 @@ void cc__settle_props(cc_world *w, int id)
         return; /* the next step's rebuild does it all */
     /* where it is: others' predictions with it go stale, pairs that now interact are pushed
      * apart, and everything about it is predicted again */
-    cc__advance_body(&CC__ARR(w, cc__body, off_body)[id], w->now); /* the push-apart reads it at now */
+    cc__advance_body(w, &CC__ARR(w, cc__body, off_body)[id], w->now); /* the push-apart reads it at now */
+    if (w->features & CC__F_ROLL)
+        cc__roll_reset(w, id); /* its deceleration may be another */
     CC__ARR(w, cc__body, off_body)[id].count++;
     cc__unoverlap_body(w, id, 0);
     cc__settle_after(w, id);

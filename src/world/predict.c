@@ -69,6 +69,42 @@ CC__NOINLINE void cc__try_sensor(const cc_world *w, int i, int j, double sx, dou
     best->pcount = CC__CARR(w, cc__body, off_body)[j].count;
 }
 
+/* A pair of which at least one circle rolls (w->features & CC__F_ROLL): the rolling sweep from
+ * both states now, the approach judged with the velocities at contact. Out of line: rolling
+ * worlds only. check/al: as cc__try_circle_x. */
+CC__NOINLINE void cc__try_roll(const cc_world *w, int i, int j, double sx, double sy, double now, cc__cand *best,
+                               uint64_t *tests, int check, cc__alone *al)
+{
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const cc__body *bi = &B[i], *bj = &B[j];
+    double xj, yj, vxj, vyj, kj, ki = CC__CARR(w, cc__props, off_props)[i].roll, R = bi->r + bj->r;
+    double dpx, dpy, t, nx, ny, gi, gdi, gj, gdj, vn, speeds;
+    int r;
+    cc__roll_state(w, j, now, &xj, &yj, &vxj, &vyj, &kj);
+    dpx = (xj + sx) - bi->px;
+    dpy = (yj + sy) - bi->py;
+    if (check && j != al->partner) {
+        double Rn = R + al->reach;
+        al->near |= dpx * dpx + dpy * dpy <= Rn * Rn;
+    }
+    if (bi->vx == 0.0 && bi->vy == 0.0 && vxj == 0.0 && vyj == 0.0)
+        return;
+    ++*tests;
+    r = cc__roll_sweep(dpx, dpy, bi->vx, bi->vy, ki, vxj, vyj, kj, R, best->t - now, -1, &t, &nx, &ny);
+    if (r == CC_MISS || !(now + t < best->t))
+        return;
+    cc__roll_motion(ki, t, &gi, &gdi);
+    cc__roll_motion(kj, t, &gj, &gdj);
+    vn = -((vxj * gdj - bi->vx * gdi) * nx + (vyj * gdj - bi->vy * gdi) * ny);
+    speeds = fabs(bi->vx * gdi) + fabs(bi->vy * gdi) + fabs(vxj * gdj) + fabs(vyj * gdj);
+    if (!cc__approaching(w, vn, speeds))
+        return;
+    best->t = now + t;
+    best->kind = CC__EV_CIRCLE;
+    best->partner = j;
+    best->pcount = bj->count;
+}
+
 /* What a world with filters or sensors decides before the geometry of pair i-j (feat): 1 when
  * the pair is done with (filtered out, two sensors, or a sensor pair handled here). */
 CC__INLINE_ALWAYS int cc__featured_pair(const cc_world *w, int i, int j, double sx, double sy, cc__cand *best,
@@ -100,6 +136,10 @@ CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, co
         return;
     if (i_fixed && isinf(CC__CARR(w, cc__cold, off_cold)[j].m))
         return; /* two immovable circles pass through each other */
+    if (feat && (w->features & CC__F_ROLL)) {
+        cc__try_roll(w, i, j, sx, sy, now, best, tests, check, al);
+        return;
+    }
     dp.x = (bj->px + bj->vx * dt + sx) - bi->px;
     dp.y = (bj->py + bj->vy * dt + sy) - bi->py;
     dv.x = bj->vx - bi->vx;
@@ -130,6 +170,7 @@ static void cc__try_segments(cc_world *w, int i, const cc__body *bi, double t_cr
     cc_circle c;
     cc_contact k;
     cc__wall_walk walk;
+    double roll = (w->features & CC__F_ROLL) ? CC__CARR(w, cc__props, off_props)[i].roll : 0.0;
     int s;
     c.pos.x = bi->px;
     c.pos.y = bi->py;
@@ -151,11 +192,21 @@ static void cc__try_segments(cc_world *w, int i, const cc__body *bi, double t_cr
         if ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__wall_interacts(w, i, s))
             continue;
         w->stats.pairs_tested++;
-        r = cc_sweep_segment(&c, q, best->t - now, &k);
-        if (r == CC_MISS || r < 0 || !(now + k.t < best->t))
-            continue;
-        if (!cc__approaching(w, cc__dot(c.vel, k.normal), fabs(c.vel.x) + fabs(c.vel.y)))
-            continue;
+        if (roll > 0.0) {
+            double g, gd;
+            r = cc__roll_sweep_segment(&c, roll, q, best->t - now, &k);
+            if (r == CC_MISS || r < 0 || !(now + k.t < best->t))
+                continue;
+            cc__roll_motion(roll, k.t, &g, &gd); /* the velocity at contact */
+            if (!cc__approaching(w, gd * cc__dot(c.vel, k.normal), gd * (fabs(c.vel.x) + fabs(c.vel.y))))
+                continue;
+        } else {
+            r = cc_sweep_segment(&c, q, best->t - now, &k);
+            if (r == CC_MISS || r < 0 || !(now + k.t < best->t))
+                continue;
+            if (!cc__approaching(w, cc__dot(c.vel, k.normal), fabs(c.vel.x) + fabs(c.vel.y)))
+                continue;
+        }
         best->t = now + k.t;
         best->kind = CC__EV_SEGMENT;
         best->partner = s;
@@ -199,6 +250,35 @@ static double cc__cross_time(const cc_world *w, const cc__body *b, int32_t *dir)
     if (dx < 0)
         return HUGE_VAL;
     return w->now + (tx > 0.0 ? tx : 0.0);
+}
+
+/* The same for a rolling body (coefficient k > 0): along its slowing path, and its stop when it
+ * comes first (dir CC__DIR_STOP). */
+static double cc__roll_cross_time(const cc_world *w, const cc__body *b, double k, int32_t *dir)
+{
+    double best = 0.5 / k, t; /* the stop */
+    int px = w->ncell[0] > 0, py = w->ncell[1] > 0;
+    *dir = CC__DIR_STOP;
+    if (b->vx > 0.0 && (px || b->cx < CC__CELL_MAX) && (t = cc__roll_reach(b->px, b->vx, k, cc__cell_top(w, b->cx, 0))) < best)
+        best = t, *dir = 0;
+    else if (b->vx < 0.0 && (px || b->cx > -CC__CELL_MAX) && (t = cc__roll_reach(b->px, b->vx, k, (double)b->cx * w->cs)) < best)
+        best = t, *dir = 1;
+    if (b->vy > 0.0 && (py || b->cy < CC__CELL_MAX) && (t = cc__roll_reach(b->py, b->vy, k, cc__cell_top(w, b->cy, 1))) < best)
+        best = t, *dir = 2;
+    else if (b->vy < 0.0 && (py || b->cy > -CC__CELL_MAX) && (t = cc__roll_reach(b->py, b->vy, k, (double)b->cy * w->cs)) < best)
+        best = t, *dir = 3;
+    return w->now + (best > 0.0 ? best : 0.0);
+}
+
+/* When body b (storage index i, at now) leaves its cell or (rolling) stops. */
+static double cc__next_move(const cc_world *w, int i, const cc__body *b, int32_t *dir)
+{
+    if (w->features & CC__F_ROLL) {
+        double k = CC__CARR(w, cc__props, off_props)[i].roll;
+        if (k > 0.0)
+            return cc__roll_cross_time(w, b, k, dir);
+    }
+    return cc__cross_time(w, b, dir);
 }
 
 /* Circles filed under the nx x ny cells from (x0, y0), row by row, tested against body i. Within
@@ -275,7 +355,7 @@ static void cc__try_images(const cc_world *w, const cc__body *B, const cc__body 
                            cc__cand *best, uint64_t *tests, int check, cc__alone *al)
 {
     /* around the image nearest i now (a large circle that moves is nowhere in particular) */
-    double sx = cc__near_shift(w, bi->px, cc__bx(&B[j], w->now), 0), sy = cc__near_shift(w, bi->py, cc__by(&B[j], w->now), 1);
+    double sx = cc__near_shift(w, bi->px, cc__bx(w, &B[j], w->now), 0), sy = cc__near_shift(w, bi->py, cc__by(w, &B[j], w->now), 1);
     int a, b;
     for (a = -1; a <= 1; a++)
         for (b = -1; b <= 1; b++)
@@ -344,6 +424,13 @@ CC__INLINE_ALWAYS uint64_t cc__predict_scan(cc_world *w, int i, cc__cand *best, 
             *t_cross = cc__again_time(w, bi);
             *dir = CC__DIR_AGAIN;
         }
+        if (feat && (w->features & CC__F_ROLL) && CC__CARR(w, cc__props, off_props)[i].roll > 0.0) {
+            double stop = w->now + 0.5 / CC__CARR(w, cc__props, off_props)[i].roll; /* no cells: its stop */
+            if (stop <= *t_cross) {
+                *t_cross = stop;
+                *dir = CC__DIR_STOP;
+            }
+        }
     } else {
         if (check && feat)
             cc__scan_block_alone_feat(w, B, i, fixed, bi->cx - 1, bi->cy - 1, best, &tests, al);
@@ -360,7 +447,7 @@ CC__INLINE_ALWAYS uint64_t cc__predict_scan(cc_world *w, int i, cc__cand *best, 
                 else
                     cc__try_circle_x(w, B, bi, i, fixed, j, 0.0, 0.0, w->now, best, &tests, check, al, feat);
             }
-        *t_cross = cc__cross_time(w, bi, dir);
+        *t_cross = cc__next_move(w, i, bi, dir);
     }
     return tests;
 }
@@ -371,6 +458,8 @@ void cc__predict(cc_world *w, int i)
     double t_cross;
     int32_t dir;
     cc__cand best;
+    if ((w->features & CC__F_ROLL) && (CC__CARR(w, cc__cold, off_cold)[i].flags & CC__ALIVE))
+        cc__advance_body(w, bi, w->now); /* a rolling body may have come to rest since */
     if (!(CC__CARR(w, cc__cold, off_cold)[i].flags & CC__ALIVE) || (bi->vx == 0.0 && bi->vy == 0.0)) {
         cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
         ev->kind = CC__EV_NONE;
@@ -378,7 +467,7 @@ void cc__predict(cc_world *w, int i)
         cc__heap_remove(w, i);
         return;
     }
-    cc__advance_body(bi, w->now);
+    cc__advance_body(w, bi, w->now);
     if (w->features & CC__F_PREDICT)
         w->stats.pairs_tested += cc__predict_scan(w, i, &best, &t_cross, &dir, 0, NULL, 1);
     else
@@ -396,8 +485,8 @@ int cc__predict_pair_alone(cc_world *w, int a, int b, double reach_a, double rea
     cc__alone al;
     if ((B[a].vx == 0.0 && B[a].vy == 0.0) || (B[b].vx == 0.0 && B[b].vy == 0.0))
         return 1; /* a body at rest predicts nothing, so it scans nothing */
-    cc__advance_body(&B[a], w->now);
-    cc__advance_body(&B[b], w->now);
+    cc__advance_body(w, &B[a], w->now);
+    cc__advance_body(w, &B[b], w->now);
     al.near = 0;
     al.partner = b;
     al.reach = reach_a;
@@ -458,7 +547,7 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
         cc__scan_block(w, B, i, fixed, cx - 1, dir == 2 ? cy + 1 : cy - 1, 3, 1, &best, &tests);
     }
     w->stats.pairs_tested += tests;
-    t_cross = cc__cross_time(w, &B[i], &ndir);
+    t_cross = cc__next_move(w, i, &B[i], &ndir);
     cc__finish(w, i, &best, t_cross, ndir);
 }
 

@@ -131,6 +131,8 @@ void cc__world_mark(cc_world *w, int id)
 {
     cc__cold *k = &CC__ARR(w, cc__cold, off_cold)[id];
     CC__ARR(w, cc__body, off_body)[id].count++;
+    if (w->features & CC__F_ROLL)
+        cc__roll_reset(w, id); /* a new velocity, the same deceleration */
     if (k->flags & CC__TOUCHED)
         return;
     k->flags |= CC__TOUCHED;

@@ -53,8 +53,8 @@ static int cc__senses(const cc_world *w, int s, int v)
 int cc__sensor_overlaps(const cc_world *w, int s, int v)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
-    double dx = cc__near_d(w, cc__bx(&B[v], w->now) - cc__bx(&B[s], w->now), 0);
-    double dy = cc__near_d(w, cc__by(&B[v], w->now) - cc__by(&B[s], w->now), 1);
+    double dx = cc__near_d(w, cc__bx(w, &B[v], w->now) - cc__bx(w, &B[s], w->now), 0);
+    double dy = cc__near_d(w, cc__by(w, &B[v], w->now) - cc__by(w, &B[s], w->now), 1);
     double R = B[s].r + B[v].r;
     return dx * dx + dy * dy < R * R;
 }
@@ -128,7 +128,7 @@ double cc__sensor_next(const cc_world *w, int i, int j, double sx, double sy)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const cc__body *a = &B[i], *b = &B[j];
-    double ax = cc__bx(a, w->now), ay = cc__by(a, w->now), bx = cc__bx(b, w->now) + sx, by = cc__by(b, w->now) + sy;
+    double ax = cc__bx(w, a, w->now), ay = cc__by(w, a, w->now), bx = cc__bx(w, b, w->now) + sx, by = cc__by(w, b, w->now) + sy;
     double R = a->r + b->r, d, gap, tol, t;
     cc_vec2 dp, dv, n;
     int s, v;
@@ -136,6 +136,26 @@ double cc__sensor_next(const cc_world *w, int i, int j, double sx, double sy)
     if ((w->features & CC__F_PERIODIC) && cc__inside(w, s, v) &&
         (cc__near_d(w, bx - ax, 0) != bx - ax || cc__near_d(w, by - ay, 1) != by - ay))
         return HUGE_VAL; /* inside through the nearest image: this one ends nothing */
+    if (w->features & CC__F_ROLL) {
+        double ka, kb, vax, vay, vbx, vby, nx, ny;
+        cc__roll_state(w, i, w->now, &ax, &ay, &vax, &vay, &ka);
+        cc__roll_state(w, j, w->now, &bx, &by, &vbx, &vby, &kb);
+        bx += sx;
+        by += sy;
+        if (ka > 0.0 || kb > 0.0) { /* along the rolling motions */
+            int inside = cc__inside(w, s, v);
+            gap = sqrt((bx - ax) * (bx - ax) + (by - ay) * (by - ay)) - R;
+            tol = cc__boundary_tol(w, a, b, ax, ay, bx, by);
+            if (inside ? gap > tol : gap < -tol)
+                return w->now; /* on the other side by more than rounding (set, pushed): now */
+            if (!inside && gap < 0.0)
+                return (bx - ax) * (vbx - vax) + (by - ay) * (vby - vay) < 0.0 ? w->now : HUGE_VAL;
+            if (cc__roll_sweep(bx - ax, by - ay, vax, vay, ka, vbx, vby, kb, R, HUGE_VAL, inside ? 1 : -1, &t, &nx, &ny) !=
+                CC_HIT)
+                return HUGE_VAL;
+            return w->now + t;
+        }
+    }
     dp = cc__v(bx - ax, by - ay);
     dv = cc__v(b->vx - a->vx, b->vy - a->vy);
     d = sqrt(dp.x * dp.x + dp.y * dp.y);

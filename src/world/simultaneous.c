@@ -48,7 +48,7 @@ static double cc__inf_norm(double x, double y) { return fabs(x) > fabs(y) ? fabs
 /* Unit vector from a to b at world time now; (1, 0) for coincident centres, like cc_sweep. */
 static cc_vec2 cc__centre_normal(const cc_world *w, const cc__body *a, const cc__body *b, double now)
 {
-    double dx = cc__near_d(w, cc__bx(b, now) - cc__bx(a, now), 0), dy = cc__near_d(w, cc__by(b, now) - cc__by(a, now), 1);
+    double dx = cc__near_d(w, cc__bx(w, b, now) - cc__bx(w, a, now), 0), dy = cc__near_d(w, cc__by(w, b, now) - cc__by(w, a, now), 1);
     double d = sqrt(dx * dx + dy * dy);
     return d > 0.0 ? cc__v(dx / d, dy / d) : cc__v(1.0, 0.0);
 }
@@ -58,7 +58,7 @@ static cc_contact cc__wall_now(const cc_world *w, int k, int s)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[k];
     cc_circle c;
-    c.pos = cc__v(cc__bx(b, w->now), cc__by(b, w->now));
+    c.pos = cc__v(cc__bx(w, b, w->now), cc__by(w, b, w->now));
     c.vel = cc__v(b->vx, b->vy);
     c.radius = b->r;
     c.mass = 1.0;
@@ -110,6 +110,8 @@ static int cc__clu_body(cc__clu *c, int k)
             return i;
     if (c->nb == c->w->clu_bodies)
         return -1;
+    if (c->w->features & CC__F_ROLL)
+        cc__advance_body(c->w, &CC__ARR(c->w, cc__body, off_body)[k], c->w->now); /* its velocity now, slowed as it rolled */
     c->id[c->nb] = k;
     c->body[c->nb].vel = cc__v(B[k].vx, B[k].vy);
     c->body[c->nb].inv_mass = isinf(m) ? 0.0 : 1.0 / m;
@@ -157,7 +159,7 @@ static void cc__clu_visit(void *ctx, int j, int s)
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
     int k = c->id[c->from], i;
     if (j >= 0) {
-        double jx = cc__bx(&B[j], w->now), jy = cc__by(&B[j], w->now);
+        double jx = cc__bx(w, &B[j], w->now), jy = cc__by(w, &B[j], w->now);
         double dx = cc__near_d(w, jx - c->fx, 0), dy = cc__near_d(w, jy - c->fy, 1);
         double gap = sqrt(dx * dx + dy * dy) - (B[k].r + B[j].r);
         if (isinf(C[k].m) && isinf(C[j].m))
@@ -186,8 +188,8 @@ static void cc__clu_gather(cc__clu *c)
         double vmax = 0.0, rmax = w->cs, loose;
         if (isinf(C[k].m))
             continue;
-        c->fx = cc__bx(&B[k], w->now);
-        c->fy = cc__by(&B[k], w->now);
+        c->fx = cc__bx(w, &B[k], w->now);
+        c->fy = cc__by(w, &B[k], w->now);
         /* near.c takes one tolerance: a bound on every pair tolerance of this body (neighbours
          * lie within a cell or two and are rarely faster than the cluster's fastest body) */
         for (q = 0; q < c->nb; q++) {
@@ -211,8 +213,8 @@ int cc__cluster_pair_reach(const cc_world *w, int a, int b, double *reach_a, dou
     const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
     double va = cc__inf_norm(B[a].vx, B[a].vy), vb = cc__inf_norm(B[b].vx, B[b].vy);
     double vmax = va > vb ? va : vb, rmax = w->cs, common;
-    double ax = cc__bx(&B[a], w->now), ay = cc__by(&B[a], w->now), bx = cc__bx(&B[b], w->now),
-           by = cc__by(&B[b], w->now), ga, gb, g, x0, x1, y0, y1;
+    double ax = cc__bx(w, &B[a], w->now), ay = cc__by(w, &B[a], w->now), bx = cc__bx(w, &B[b], w->now),
+           by = cc__by(w, &B[b], w->now), ga, gb, g, x0, x1, y0, y1;
     bx = ax + cc__near_d(w, bx - ax, 0); /* periodic: the image of b next to a */
     by = ay + cc__near_d(w, by - ay, 1);
     cc__wall_walk walk;
@@ -307,7 +309,7 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
         cc__body *b = &B[c.id[i]];
         if (c.body[i].vel.x == b->vx && c.body[i].vel.y == b->vy)
             continue;
-        cc__advance_body(b, w->now);
+        cc__advance_body(w, b, w->now);
         b->vx = c.body[i].vel.x;
         b->vy = c.body[i].vel.y;
         cc__world_mark(w, c.id[i]);
@@ -319,8 +321,8 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
         cc_contact ev;
         if (k->b >= 0) {
             const cc__body *bb = &B[c.id[k->b]];
-            double ax = cc__bx(ba, w->now), ay = cc__by(ba, w->now);
-            double dx = cc__near_d(w, cc__bx(bb, w->now) - ax, 0), dy = cc__near_d(w, cc__by(bb, w->now) - ay, 1);
+            double ax = cc__bx(w, ba, w->now), ay = cc__by(w, ba, w->now);
+            double dx = cc__near_d(w, cc__bx(w, bb, w->now) - ax, 0), dy = cc__near_d(w, cc__by(w, bb, w->now) - ay, 1);
             ev.depth = ba->r + bb->r - sqrt(dx * dx + dy * dy);
             ev.point = cc__v(ax + k->normal.x * (ba->r - 0.5 * ev.depth),
                              ay + k->normal.y * (ba->r - 0.5 * ev.depth));
@@ -341,9 +343,9 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
     for (i = 0; i < n; i++) {
         if (!cc__still_approaching(w, &touch[i]))
             continue;
-        cc__advance_body(&B[touch[i].a], w->now);
+        cc__advance_body(w, &B[touch[i].a], w->now);
         if (touch[i].b >= 0)
-            cc__advance_body(&B[touch[i].b], w->now);
+            cc__advance_body(w, &B[touch[i].b], w->now);
         hits += cc__world_resolve_pairwise(w, &touch[i], 1);
     }
     return hits;

@@ -125,7 +125,7 @@ void cc__sort_bodies(cc_world *w)
     for (p = 0; p < n; p++) {
         hpos[p] = -1;
         if (C[p].flags & CC__ALIVE) {
-            cc__advance_body(&B[p], w->now);
+            cc__advance_body(w, &B[p], w->now);
             cc__grid_insert(w, p);
         }
     }

@@ -19,4 +19,5 @@ list(APPEND CC_WORLD_SOURCES
   world/cast.c      # casts: the first circle or wall a moving circle or ray touches
   world/hash.c      # the state hash
   world/walls.c     # the walls' tree: the walls near a circle, a path or a box
+  world/roll.c      # rolling to rest: the motion, and the times rolling circles meet
 )

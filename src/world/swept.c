@@ -44,6 +44,27 @@ static void cc__pair(cc_world *w, int i, int j, double dt)
     /* periodic: the nearest image (a step must not carry a body half a period: see the header) */
     dp = cc__v(cc__near_d(w, bj->px - bi->px, 0), cc__near_d(w, bj->py - bi->py, 1));
     dv = cc__v(bj->vx - bi->vx, bj->vy - bi->vy);
+    if (w->features & CC__F_ROLL) {
+        const cc__props *P = CC__CARR(w, cc__props, off_props);
+        if (P[i].roll > 0.0 || P[j].roll > 0.0) { /* along the rolling motions (both at now) */
+            double gi, gdi, gj, gdj;
+            if ((isinf(C[i].m) && isinf(C[j].m)) ||
+                ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__circles_interact(w, i, j)))
+                return;
+            w->stats.pairs_tested++;
+            r = cc__roll_sweep(dp.x, dp.y, bi->vx, bi->vy, P[i].roll, bj->vx, bj->vy, P[j].roll, R, dt, -1, &t, &n.x, &n.y);
+            if (r == CC_MISS)
+                return;
+            cc__roll_motion(P[i].roll, t, &gi, &gdi);
+            cc__roll_motion(P[j].roll, t, &gj, &gdj);
+            if (!cc__approaching(w, -((bj->vx * gdj - bi->vx * gdi) * n.x + (bj->vy * gdj - bi->vy * gdi) * n.y),
+                                 fabs(bi->vx * gdi) + fabs(bi->vy * gdi) + fabs(bj->vx * gdj) + fabs(bj->vy * gdj)))
+                return;
+            cc__offer(w, i, w->now + t, CC__EV_CIRCLE, j);
+            cc__offer(w, j, w->now + t, CC__EV_CIRCLE, i);
+            return;
+        }
+    }
     if (!(cc__dot(dp, dv) < 0.0))
         return;
     /* too far apart to close the gap in the step: |dp| > R + |dv| dt, with a margin far above
@@ -73,6 +94,7 @@ static void cc__walls(cc_world *w, int i, double dt)
     cc_circle c;
     cc_contact k;
     cc__wall_walk walk;
+    double roll = (w->features & CC__F_ROLL) ? CC__CARR(w, cc__props, off_props)[i].roll : 0.0;
     int s, first = 1;
     if (w->n_segments == 0 || (b->vx == 0.0 && b->vy == 0.0))
         return;
@@ -98,8 +120,15 @@ static void cc__walls(cc_world *w, int i, double dt)
             first = 0;
         }
         w->stats.pairs_tested++;
-        if (cc_sweep_segment(&c, &seg[s], dt, &k) <= CC_MISS ||
-            !cc__approaching(w, cc__dot(c.vel, k.normal), fabs(c.vel.x) + fabs(c.vel.y)))
+        if (roll > 0.0) { /* along its rolling motion: the velocity at contact is the slower */
+            double g, gd;
+            if (cc__roll_sweep_segment(&c, roll, &seg[s], dt, &k) <= CC_MISS)
+                continue;
+            cc__roll_motion(roll, k.t, &g, &gd);
+            if (!cc__approaching(w, gd * cc__dot(c.vel, k.normal), gd * (fabs(c.vel.x) + fabs(c.vel.y))))
+                continue;
+        } else if (cc_sweep_segment(&c, &seg[s], dt, &k) <= CC_MISS ||
+                   !cc__approaching(w, cc__dot(c.vel, k.normal), fabs(c.vel.x) + fabs(c.vel.y)))
             continue;
         cc__offer(w, i, w->now + k.t, CC__EV_SEGMENT, s);
     }
@@ -276,12 +305,12 @@ int cc__step_swept(cc_world *w, double dt)
         cc__heap_remove(w, i);
         w->stats.events++;
         w->now = e.t;
-        cc__advance_body(&B[i], e.t);
+        cc__advance_body(w, &B[i], e.t);
         tc.a = i;
         tc.b = -1;
         tc.segment = -1;
         if (e.kind == CC__EV_CIRCLE) {
-            cc__advance_body(&B[e.partner], e.t);
+            cc__advance_body(w, &B[e.partner], e.t);
             tc.b = e.partner;
         } else {
             tc.segment = e.partner;

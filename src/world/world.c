@@ -287,6 +287,8 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
     b->count++;
     k->m = c->mass;
     k->flags = CC__ALIVE;
+    if (w->features & CC__F_ROLL)
+        cc__roll_reset(w, id);
     if (w->mode != CC_MODE_EXACT)
         return; /* the other modes rebuild their grid every step */
     /* wider than the cells allow: the cell size grows, everything is refiled at the next step */
@@ -397,8 +399,14 @@ CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s)
 static void cc__get(const cc_world *w, int id, cc_circle *out)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[id];
-    out->pos.x = cc__bx(b, w->now);
-    out->pos.y = cc__by(b, w->now);
+    out->pos.x = cc__bx(w, b, w->now);
+    out->pos.y = cc__by(w, b, w->now);
+    out->vel.x = b->vx;
+    out->vel.y = b->vy;
+    if (w->features & CC__F_ROLL) { /* slowed since its state was written */
+        double x, y, k;
+        cc__roll_state(w, id, w->now, &x, &y, &out->vel.x, &out->vel.y, &k);
+    }
     if (w->features & CC__F_PERIODIC) { /* within the period, where its lazy state may have left it */
         int32_t turns;
         if (w->period[0] > 0.0)
@@ -406,8 +414,6 @@ static void cc__get(const cc_world *w, int id, cc_circle *out)
         if (w->period[1] > 0.0)
             out->pos.y = cc__wrap_coord(w, out->pos.y, 1, &turns);
     }
-    out->vel.x = b->vx;
-    out->vel.y = b->vy;
     out->radius = b->r;
     out->mass = CC__CARR(w, cc__cold, off_cold)[id].m;
 }
@@ -434,8 +440,8 @@ CC_API int cc_world_get_unwrapped(const cc_world *w, int id, cc_vec2 *out)
         return CC_ERR_NOT_FOUND;
     b = &CC__CARR(w, cc__body, off_body)[k];
     p = &CC__CARR(w, cc__props, off_props)[k];
-    out->x = cc__bx(b, w->now) + (double)p->wrap[0] * w->period[0];
-    out->y = cc__by(b, w->now) + (double)p->wrap[1] * w->period[1];
+    out->x = cc__bx(w, b, w->now) + (double)p->wrap[0] * w->period[0];
+    out->y = cc__by(w, b, w->now) + (double)p->wrap[1] * w->period[1];
     return CC_OK;
 }
 

@@ -36,6 +36,8 @@ typedef struct cc__cold {
 typedef struct cc__props {
     double restitution;
     double decel;       /* rolling deceleration; 0 for an immovable circle */
+    double roll;        /* the rolling coefficient of its lazy state: decel / (2 |v|) at b->t
+                           (0: straight motion, or at rest); see roll.c */
     uint64_t inside;    /* the sensors (by slot) this circle overlaps now */
     uint32_t category, mask;
     int32_t sensor;     /* its sensor slot, or -1 */
@@ -74,6 +76,7 @@ typedef struct cc__segment_props {
  * the circles of the 3x3 cells, so that on a crossing only the newly adjacent cells need a look;
  * walls are searched up to min(hit, crossing) and looked at again after each crossing. */
 #define CC__DIR_AGAIN 4 /* t_cross is no crossing: the body looks again then (periodic, large) */
+#define CC__DIR_STOP 5  /* t_cross is no crossing: a rolling body comes to rest then */
 
 typedef struct cc__event {
     double t;       /* absolute time of the hit, +INFINITY when none */
@@ -151,16 +154,62 @@ struct cc_world {
 /* Largest |cell coordinate|: cell bounds stay exact doubles, and no cell index overflows. */
 #define CC__CELL_MAX ((int32_t)1 << 30)
 
+/* ---- roll.c: rolling to rest (issue 12) ---- */
+/* A body's state at time t along its rolling motion (w->features & CC__F_ROLL). */
+void cc__roll_at(const cc_world *w, const cc__body *b, double t, double *x, double *y, double *vx, double *vy);
+/* The body carried to t along its rolling motion: its lazy state re-based there. */
+void cc__roll_advance(cc_world *w, cc__body *b, double t);
+/* decel / (2 |v|): the rolling coefficient of a circle moving at v (0 at rest or without decel). */
+double cc__roll_coef(double vx, double vy, double decel);
+/* g(tau) = tau (1 - k tau) up to the stop at 1 / (2k), then 1 / (4k); *gd = g'(tau). */
+void cc__roll_motion(double k, double tau, double *g, double *gd);
+/* The earliest t in [0, t_max] at which two rolling circles (b at dp from a, velocities and
+ * coefficients at t = 0) come to R apart while approaching (dir = -1: CC_HIT; CC_OVERLAP when
+ * closer now) or while separating (dir = +1: CC_HIT). *n: the unit offset a -> b then. */
+int cc__roll_sweep(double dpx, double dpy, double vax, double vay, double ka, double vbx, double vby, double kb,
+                   double R, double t_max, int dir, double *t, double *nx, double *ny);
+/* A rolling circle against a wall: as cc_sweep_segment, for the motion of roll.c. */
+int cc__roll_sweep_segment(const cc_circle *c, double k, const cc_segment *s, double t_max, cc_contact *out);
+/* When coordinate x0 moving at v with coefficient k first reaches X (HUGE_VAL: never). */
+double cc__roll_reach(double x0, double v, double k, double X);
+/* Circle j's position, velocity and rolling coefficient at time t (not re-based). */
+void cc__roll_state(const cc_world *w, int j, double t, double *x, double *y, double *vx, double *vy, double *k);
+/* Circle j comes to rest now (its stop event): exactly where its motion ends. */
+void cc__roll_stop(cc_world *w, int j);
+/* Circle j (at now) has a new velocity or deceleration: its rolling coefficient from them. */
+void cc__roll_reset(cc_world *w, int j);
+
 /* ---- world.c ---- */
 /* The struct_size handshake: how many of a struct's first n bytes hold whole fields, given the
  * end offsets of its fields in ascending order (a field cut by n is not counted). */
 size_t cc__whole_fields(size_t n, const size_t *ends, int count);
-/* position of body b at time t (its lazy state carried forward) */
-static inline double cc__bx(const cc__body *b, double t) { return b->px + b->vx * (t - b->t); }
-static inline double cc__by(const cc__body *b, double t) { return b->py + b->vy * (t - b->t); }
-static inline void cc__advance_body(cc__body *b, double t)
+/* position of body b at time t (its lazy state carried forward; rolling bodies along their
+ * rolling motion, roll.c) */
+static inline double cc__bx(const cc_world *w, const cc__body *b, double t)
+{
+    if (w->features & CC__F_ROLL) {
+        double x, y, vx, vy;
+        cc__roll_at(w, b, t, &x, &y, &vx, &vy);
+        return x;
+    }
+    return b->px + b->vx * (t - b->t);
+}
+static inline double cc__by(const cc_world *w, const cc__body *b, double t)
+{
+    if (w->features & CC__F_ROLL) {
+        double x, y, vx, vy;
+        cc__roll_at(w, b, t, &x, &y, &vx, &vy);
+        return y;
+    }
+    return b->py + b->vy * (t - b->t);
+}
+static inline void cc__advance_body(cc_world *w, cc__body *b, double t)
 {
     if (b->t != t) {
+        if (w->features & CC__F_ROLL) {
+            cc__roll_advance(w, b, t);
+            return;
+        }
         b->px += b->vx * (t - b->t);
         b->py += b->vy * (t - b->t);
         b->t = t;
@@ -171,8 +220,8 @@ static inline void cc__advance_body(cc__body *b, double t)
 static inline void cc__body_pos(const cc_world *w, int j, double t, double *x, double *y)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[j];
-    *x = cc__bx(b, t);
-    *y = cc__by(b, t);
+    *x = cc__bx(w, b, t);
+    *y = cc__by(w, b, t);
 }
 /* ---- periodic axes (issue 15) ---- */
 /* d (a difference of coordinates along axis k) as its nearest image: |d| <= period / 2. One
