@@ -58,7 +58,8 @@ fn main() {
     } else {
         // cross-compiling: the layout test has nothing to compare and says so
         "pub const C_LAYOUT: &[(&str, &str, usize, usize)] = &[];\npub const C_MODES: [i32; 3] = [0, 1, 2];\n\
-         pub const C_VERSION: u32 = 0;\npub const C_CODES: [(&str, i32); 0] = [];\n"
+         pub const C_VERSION: u32 = 0;\npub const C_CODES: [(&str, i32); 0] = [];\n\
+         pub const C_CONSTANTS: &[(&str, i64)] = &[];\n"
             .to_string()
     };
     fs::write(out.join("layout.rs"), layout).unwrap();

@@ -27,13 +27,24 @@ int main(void) {
     S(cc_contact_event); F(cc_contact_event, a); F(cc_contact_event, b); F(cc_contact_event, segment);
     F(cc_contact_event, t); F(cc_contact_event, point); F(cc_contact_event, normal);
     F(cc_contact_event, impulse);
+    S(cc_sensor_event); F(cc_sensor_event, sensor); F(cc_sensor_event, visitor); F(cc_sensor_event, begin);
+    F(cc_sensor_event, t);
     S(cc_world_def); F(cc_world_def, struct_size); F(cc_world_def, max_circles);
     F(cc_world_def, max_segments); F(cc_world_def, mode); F(cc_world_def, restitution);
     F(cc_world_def, rest_speed); F(cc_world_def, cell_size); F(cc_world_def, max_events);
-    F(cc_world_def, on_contact); F(cc_world_def, user);
+    F(cc_world_def, on_contact); F(cc_world_def, user); F(cc_world_def, rolling_decel);
+    F(cc_world_def, restitution_mix); F(cc_world_def, on_sensor); F(cc_world_def, period);
     S(cc_world_stats); F(cc_world_stats, struct_size); F(cc_world_stats, collisions);
     F(cc_world_stats, events); F(cc_world_stats, stale_events); F(cc_world_stats, pairs_tested);
-    F(cc_world_stats, cell_crossings); F(cc_world_stats, max_overlap);
+    F(cc_world_stats, cell_crossings); F(cc_world_stats, max_overlap); F(cc_world_stats, virial);
+    F(cc_world_stats, wall_impulse);
+    S(cc_circle_props); F(cc_circle_props, struct_size); F(cc_circle_props, restitution);
+    F(cc_circle_props, rolling_decel); F(cc_circle_props, category); F(cc_circle_props, mask);
+    F(cc_circle_props, sensor);
+    S(cc_segment_props); F(cc_segment_props, struct_size); F(cc_segment_props, restitution);
+    F(cc_segment_props, category); F(cc_segment_props, mask);
+    S(cc_cast_hit); F(cc_cast_hit, circle); F(cc_cast_hit, segment); F(cc_cast_hit, t);
+    F(cc_cast_hit, point); F(cc_cast_hit, normal);
     S(cc_vec2f); F(cc_vec2f, x); F(cc_vec2f, y);
     S(cc_circlef); F(cc_circlef, pos); F(cc_circlef, vel); F(cc_circlef, radius); F(cc_circlef, mass);
     S(cc_segmentf); F(cc_segmentf, a); F(cc_segmentf, b);
@@ -48,5 +59,14 @@ int main(void) {
            "(\"CC_ERR_VERSION\", %d)];\n",
            CC_MISS, CC_OK, CC_HIT, CC_OVERLAP, CC_EVENT_LIMIT, CC_ERR_INVALID, CC_ERR_NOT_FOUND,
            CC_ERR_FULL, CC_ERR_MEMORY, CC_ERR_VERSION);
+    /* every integer macro of the header, by name (the tests check that the header defines no
+     * other and that the Rust constants have these values) */
+#define K(M) printf("    (\"%s\", %lld),\n", #M, (long long)(M))
+    printf("pub const C_CONSTANTS: &[(&str, i64)] = &[\n");
+    K(CC_VERSION_MAJOR); K(CC_VERSION_MINOR); K(CC_VERSION_PATCH); K(CC_VERSION);
+    K(CC_MISS); K(CC_OK); K(CC_HIT); K(CC_OVERLAP); K(CC_EVENT_LIMIT); K(CC_ERR_INVALID);
+    K(CC_ERR_NOT_FOUND); K(CC_ERR_FULL); K(CC_ERR_MEMORY); K(CC_ERR_VERSION);
+    K(CC_MIX_MIN); K(CC_MIX_MAX); K(CC_MIX_PRODUCT); K(CC_MIX_MEAN); K(CC_MAX_SENSORS);
+    printf("];\n");
     return 0;
 }

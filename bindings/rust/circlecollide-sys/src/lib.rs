@@ -12,7 +12,7 @@ use core::ffi::{c_char, c_int, c_long, c_uint, c_void};
 // ---- version and result codes ------------------------------------------------------------
 
 pub const CC_VERSION_MAJOR: u32 = 1;
-pub const CC_VERSION_MINOR: u32 = 0;
+pub const CC_VERSION_MINOR: u32 = 1;
 pub const CC_VERSION_PATCH: u32 = 0;
 pub const CC_VERSION: u32 = (CC_VERSION_MAJOR << 16) | (CC_VERSION_MINOR << 8) | CC_VERSION_PATCH;
 
@@ -100,6 +100,22 @@ pub struct cc_contact_event {
 pub type cc_contact_fn = Option<unsafe extern "C" fn(event: *const cc_contact_event, user: *mut c_void)>;
 
 #[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct cc_sensor_event {
+    pub sensor: c_int,
+    pub visitor: c_int,
+    pub begin: c_int,
+    pub t: f64,
+}
+
+pub type cc_sensor_fn = Option<unsafe extern "C" fn(event: *const cc_sensor_event, user: *mut c_void)>;
+
+pub const CC_MIX_MIN: c_int = 0;
+pub const CC_MIX_MAX: c_int = 1;
+pub const CC_MIX_PRODUCT: c_int = 2;
+pub const CC_MIX_MEAN: c_int = 3;
+
+#[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct cc_world_def {
     pub struct_size: usize,
@@ -112,6 +128,11 @@ pub struct cc_world_def {
     pub max_events: u64,
     pub on_contact: cc_contact_fn,
     pub user: *mut c_void,
+    // 1.1
+    pub rolling_decel: f64,
+    pub restitution_mix: c_int,
+    pub on_sensor: cc_sensor_fn,
+    pub period: cc_vec2,
 }
 
 #[repr(C)]
@@ -124,6 +145,41 @@ pub struct cc_world_stats {
     pub pairs_tested: u64,
     pub cell_crossings: u64,
     pub max_overlap: f64,
+    // 1.1
+    pub virial: f64,
+    pub wall_impulse: f64,
+}
+
+pub const CC_MAX_SENSORS: c_int = 64;
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct cc_circle_props {
+    pub struct_size: usize,
+    pub restitution: f64,
+    pub rolling_decel: f64,
+    pub category: u32,
+    pub mask: u32,
+    pub sensor: c_int,
+}
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct cc_segment_props {
+    pub struct_size: usize,
+    pub restitution: f64,
+    pub category: u32,
+    pub mask: u32,
+}
+
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct cc_cast_hit {
+    pub circle: c_int,
+    pub segment: c_int,
+    pub t: f64,
+    pub point: cc_vec2,
+    pub normal: cc_vec2,
 }
 
 // ---- single precision --------------------------------------------------------------------
@@ -200,8 +256,19 @@ extern "C" {
     pub fn cc_world_set_circle(w: *mut cc_world, id: c_int, c: *const cc_circle) -> c_int;
     pub fn cc_world_get_circles(w: *const cc_world, ids: *mut c_int, out: *mut cc_circle, capacity: c_int) -> c_int;
     pub fn cc_world_get_segment(w: *const cc_world, id: c_int, out: *mut cc_segment) -> c_int;
+    pub fn cc_world_get_unwrapped(w: *const cc_world, id: c_int, out: *mut cc_vec2) -> c_int;
     pub fn cc_world_time(w: *const cc_world) -> f64;
     pub fn cc_world_get_stats(w: *const cc_world, out: *mut cc_world_stats) -> c_int;
+
+    pub fn cc_world_get_circle_props(w: *const cc_world, id: c_int, out: *mut cc_circle_props) -> c_int;
+    pub fn cc_world_set_circle_props(w: *mut cc_world, id: c_int, p: *const cc_circle_props) -> c_int;
+    pub fn cc_world_get_segment_props(w: *const cc_world, id: c_int, out: *mut cc_segment_props) -> c_int;
+    pub fn cc_world_set_segment_props(w: *mut cc_world, id: c_int, p: *const cc_segment_props) -> c_int;
+
+    pub fn cc_world_cast_circle(w: *const cc_world, p: cc_vec2, radius: f64, d: cc_vec2, mask: u32, out: *mut cc_cast_hit) -> c_int;
+    pub fn cc_world_query_circle(w: *const cc_world, c: cc_vec2, radius: f64, mask: u32, ids: *mut c_int, capacity: c_int) -> c_int;
+    pub fn cc_world_query_box(w: *const cc_world, lo: cc_vec2, hi: cc_vec2, mask: u32, ids: *mut c_int, capacity: c_int) -> c_int;
+    pub fn cc_world_hash(w: *const cc_world) -> u64;
 }
 
 /// True when this build of the library contains the world (cc_world_*).

@@ -2,7 +2,7 @@
 //! sizes, as the C compiler lays them out), function signatures (parsed from the header's
 //! text and from src/lib.rs), result codes, modes and the version.
 
-use circlecollide_sys::c_layout::{C_CODES, C_LAYOUT, C_MODES, C_VERSION, HEADER_PATH};
+use circlecollide_sys::c_layout::{C_CONSTANTS, C_LAYOUT, C_MODES, C_VERSION, HEADER_PATH};
 use circlecollide_sys::*;
 use core::mem::{align_of, offset_of, size_of};
 use std::collections::BTreeMap;
@@ -35,8 +35,12 @@ fn rust_table() -> Vec<(&'static str, &'static str, usize, usize)> {
         cc_contact { t, point, normal, depth }
         cc_circle_soa { px, py, vx, vy, radius }
         cc_contact_event { a, b, segment, t, point, normal, impulse }
-        cc_world_def { struct_size, max_circles, max_segments, mode, restitution, rest_speed, cell_size, max_events, on_contact, user }
-        cc_world_stats { struct_size, collisions, events, stale_events, pairs_tested, cell_crossings, max_overlap }
+        cc_sensor_event { sensor, visitor, begin, t }
+        cc_world_def { struct_size, max_circles, max_segments, mode, restitution, rest_speed, cell_size, max_events, on_contact, user, rolling_decel, restitution_mix, on_sensor, period }
+        cc_world_stats { struct_size, collisions, events, stale_events, pairs_tested, cell_crossings, max_overlap, virial, wall_impulse }
+        cc_circle_props { struct_size, restitution, rolling_decel, category, mask, sensor }
+        cc_segment_props { struct_size, restitution, category, mask }
+        cc_cast_hit { circle, segment, t, point, normal }
         cc_vec2f { x, y }
         cc_circlef { pos, vel, radius, mass }
         cc_segmentf { a, b }
@@ -96,7 +100,7 @@ fn header_structs(h: &str) -> BTreeMap<String, Vec<String>> {
 fn structs_match_the_header_and_the_c_layout() {
     assert!(!C_LAYOUT.is_empty(), "no C layout (cross-compiling?)");
     let h = header_structs(&header());
-    assert!(h.len() >= 12, "{h:?}");
+    assert!(h.len() >= 16, "{h:?}");
     let rust = rust_table();
     for (name, fields) in &h {
         let listed = |t: &[(&str, &str, usize, usize)]| -> Vec<String> {
@@ -165,6 +169,7 @@ fn rust_to_c(t: &str) -> String {
         "c_long" => "long",
         "usize" => "size_t",
         "u64" => "uint64_t",
+        "u32" => "uint32_t",
         "c_char" => "char",
         "c_void" => "void",
         other => other,
@@ -198,7 +203,7 @@ fn rust_functions() -> BTreeMap<String, String> {
 #[test]
 fn functions_match_the_header_signature_for_signature() {
     let h = header_functions(&header());
-    assert!(h.len() >= 30, "{h:?}");
+    assert!(h.len() >= 40, "{h:?}");
     let r = rust_functions();
     let only_h: Vec<_> = h.keys().filter(|k| !r.contains_key(*k)).collect();
     let only_r: Vec<_> = r.keys().filter(|k| !h.contains_key(*k)).collect();
@@ -208,25 +213,105 @@ fn functions_match_the_header_signature_for_signature() {
     }
 }
 
+/// The names of the header's integer macros (`#define CC_X value`), CC_API aside.
+fn header_defines(h: &str) -> Vec<String> {
+    h.lines()
+        .filter_map(|l| l.trim().strip_prefix("#"))
+        .filter_map(|l| l.trim().strip_prefix("define"))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|n| n.starts_with("CC_") && *n != "CC_API")
+        .map(str::to_string)
+        .collect()
+}
+
 #[test]
 fn constants_match_the_header() {
-    let rust = [
-        ("CC_MISS", CC_MISS),
-        ("CC_OK", CC_OK),
-        ("CC_HIT", CC_HIT),
-        ("CC_OVERLAP", CC_OVERLAP),
-        ("CC_EVENT_LIMIT", CC_EVENT_LIMIT),
-        ("CC_ERR_INVALID", CC_ERR_INVALID),
-        ("CC_ERR_NOT_FOUND", CC_ERR_NOT_FOUND),
-        ("CC_ERR_FULL", CC_ERR_FULL),
-        ("CC_ERR_MEMORY", CC_ERR_MEMORY),
-        ("CC_ERR_VERSION", CC_ERR_VERSION),
+    let rust: [(&str, i64); 19] = [
+        ("CC_VERSION_MAJOR", CC_VERSION_MAJOR.into()),
+        ("CC_VERSION_MINOR", CC_VERSION_MINOR.into()),
+        ("CC_VERSION_PATCH", CC_VERSION_PATCH.into()),
+        ("CC_VERSION", CC_VERSION.into()),
+        ("CC_MISS", CC_MISS.into()),
+        ("CC_OK", CC_OK.into()),
+        ("CC_HIT", CC_HIT.into()),
+        ("CC_OVERLAP", CC_OVERLAP.into()),
+        ("CC_EVENT_LIMIT", CC_EVENT_LIMIT.into()),
+        ("CC_ERR_INVALID", CC_ERR_INVALID.into()),
+        ("CC_ERR_NOT_FOUND", CC_ERR_NOT_FOUND.into()),
+        ("CC_ERR_FULL", CC_ERR_FULL.into()),
+        ("CC_ERR_MEMORY", CC_ERR_MEMORY.into()),
+        ("CC_ERR_VERSION", CC_ERR_VERSION.into()),
+        ("CC_MIX_MIN", CC_MIX_MIN.into()),
+        ("CC_MIX_MAX", CC_MIX_MAX.into()),
+        ("CC_MIX_PRODUCT", CC_MIX_PRODUCT.into()),
+        ("CC_MIX_MEAN", CC_MIX_MEAN.into()),
+        ("CC_MAX_SENSORS", CC_MAX_SENSORS.into()),
     ];
-    assert_eq!(rust, C_CODES);
+    assert_eq!(&rust[..], C_CONSTANTS, "(Rust, C)");
+    // every integer macro of the header is among them (a new one must be added here and to
+    // native/layout.c)
+    let mut names: Vec<_> = rust.iter().map(|r| r.0.to_string()).collect();
+    let mut defined = header_defines(&header());
+    names.sort();
+    defined.sort();
+    assert_eq!(names, defined, "the header's CC_ macros and the Rust constants differ");
     assert_eq!([CC_MODE_EXACT, CC_MODE_SWEPT, CC_MODE_DISCRETE], C_MODES);
     assert_eq!(CC_VERSION, C_VERSION);
     // and the library linked is the one of this header
     assert_eq!(unsafe { cc_version() }, C_VERSION);
+}
+
+/// `typedef ret (*name)(args);` of the header, normalised as "ret name(type, type)".
+fn header_fn_types(h: &str) -> BTreeMap<String, String> {
+    let mut out = BTreeMap::new();
+    for decl in h.split(';').map(words) {
+        let Some(rest) = decl.strip_prefix("typedef ") else { continue };
+        let Some(star) = rest.find("(*") else { continue };
+        let ret = c_type(&rest[..star]);
+        let close = star + rest[star..].find(')').unwrap();
+        let name = rest[star + 2..close].trim().to_string();
+        let args = &rest[close + 1..];
+        let args = args.trim().trim_start_matches('(').trim_end_matches(')');
+        let args: Vec<String> = args
+            .split(',')
+            .map(|a| {
+                let a = a.replace('*', " * ");
+                let mut t: Vec<&str> = a.split_whitespace().collect();
+                t.pop();
+                c_type(&t.join(" "))
+            })
+            .collect();
+        out.insert(name.clone(), format!("{ret} {name}({})", args.join(", ")));
+    }
+    out
+}
+
+/// The same from `pub type name = Option<unsafe extern "C" fn(args) -> ret>;` in src/lib.rs.
+fn rust_fn_types() -> BTreeMap<String, String> {
+    let src = include_str!("../src/lib.rs");
+    let mut out = BTreeMap::new();
+    for decl in src.split(';').map(words) {
+        let Some(p) = decl.find("pub type ") else { continue };
+        let decl = &decl[p + 9..];
+        let Some((name, ty)) = decl.split_once(" = Option<unsafe extern \"C\" fn(") else { continue };
+        let ty = ty.strip_suffix('>').unwrap();
+        let close = ty.rfind(')').unwrap();
+        let args: Vec<String> = ty[..close]
+            .split(',')
+            .filter(|a| !a.trim().is_empty())
+            .map(|a| rust_to_c(a.split_once(':').unwrap().1))
+            .collect();
+        let ret = ty[close + 1..].trim().strip_prefix("->").map_or("void".to_string(), rust_to_c);
+        out.insert(name.to_string(), format!("{ret} {name}({})", args.join(", ")));
+    }
+    out
+}
+
+#[test]
+fn callback_types_match_the_header() {
+    let h = header_fn_types(&header());
+    assert_eq!(h.len(), 2, "{h:?}");
+    assert_eq!(h, rust_fn_types());
 }
 
 #[test]
@@ -236,4 +321,7 @@ fn the_c_layout_fields_are_those_of_the_header() {
     assert_eq!(h["s"], ["px", "py", "n"]);
     let f = header_functions("CC_API const char *cc_x(int code, const cc_circle *a);");
     assert_eq!(f["cc_x"], "const char* cc_x(int, const cc_circle*)");
+    let t = header_fn_types("typedef void (*cc_f)(const cc_e *event, void *user);");
+    assert_eq!(t["cc_f"], "void cc_f(const cc_e*, void*)");
+    assert_eq!(header_defines("#define CC_API x\n#  define CC_A (-1) /* c */\n#define X 1"), ["CC_A"]);
 }
