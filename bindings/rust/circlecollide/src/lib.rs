@@ -29,7 +29,10 @@ pub use batch::{sweep_many, Columns};
 #[cfg(cc_has_world)]
 mod world;
 #[cfg(cc_has_world)]
-pub use world::{CircleId, ContactEvent, Mode, Other, SegmentId, Stats, StepOutcome, World, WorldDef};
+pub use world::{
+    CastHit, CircleId, CircleProps, ContactEvent, Mode, Other, RestitutionMix, SegmentId, SegmentProps, SensorEvent, Stats,
+    StepOutcome, World, WorldDef, MAX_SENSORS,
+};
 
 // ---- errors ------------------------------------------------------------------------------
 

@@ -1,5 +1,7 @@
 //! World: many circles and walls simulated by the C library in a buffer this object owns, with
-//! an optional contact callback (a closure that may borrow from its caller).
+//! optional contact and sensor callbacks (closures that may borrow from their caller), per-body
+//! properties (restitution, filters, sensors, rolling deceleration), periodic boxes, and queries
+//! of the world as it stands (casts, overlap queries, the state hash).
 
 use core::ffi::{c_int, c_void};
 use core::marker::PhantomData;
@@ -7,7 +9,7 @@ use core::ptr::NonNull;
 use std::any::Any;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 
-use crate::{check, sys, Circle, Error, Result, Segment, Vec2};
+use crate::{check, sys, Circle, ContactKind, Error, Result, Segment, Vec2};
 
 /// How the world advances.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -21,13 +23,40 @@ pub enum Mode {
     Discrete,
 }
 
+/// How the restitution of a contact is made from its two sides' (a circle's and the other
+/// circle's or the wall's, see [`CircleProps::restitution`] and [`SegmentProps::restitution`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum RestitutionMix {
+    /// The smaller of the two (`CC_MIX_MIN`, the library's default).
+    #[default]
+    Min,
+    /// The larger of the two (`CC_MIX_MAX`).
+    Max,
+    /// Their product (`CC_MIX_PRODUCT`).
+    Product,
+    /// Their mean (`CC_MIX_MEAN`).
+    Mean,
+}
+
+impl RestitutionMix {
+    fn to_c(self) -> c_int {
+        match self {
+            RestitutionMix::Min => sys::CC_MIX_MIN,
+            RestitutionMix::Max => sys::CC_MIX_MAX,
+            RestitutionMix::Product => sys::CC_MIX_PRODUCT,
+            RestitutionMix::Mean => sys::CC_MIX_MEAN,
+        }
+    }
+}
+
 /// The world's settings; `WorldDef::default()` holds the library's defaults.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WorldDef {
     pub max_circles: usize,
     pub max_segments: usize,
     pub mode: Mode,
-    /// Coefficient of restitution of every contact, in [0, 1].
+    /// Coefficient of restitution of every contact, in [0, 1]; since 1.1 the restitution a new
+    /// circle or wall gets (its properties may then change it).
     pub restitution: f64,
     /// Approach speeds below this collide with restitution 0.
     pub rest_speed: f64,
@@ -35,6 +64,16 @@ pub struct WorldDef {
     pub cell_size: f64,
     /// Cap on events per step.
     pub max_events: u64,
+    /// Deceleration (length / time^2, >= 0) of every movable circle rolling on the ground: a
+    /// circle of speed s comes to rest after s / rolling_decel along a straight line. The value
+    /// a new circle gets ([`CircleProps::rolling_decel`]); 0 (the default) is no friction.
+    pub rolling_decel: f64,
+    /// How a contact's restitution is made from its two sides' (default [`RestitutionMix::Min`]).
+    pub restitution_mix: RestitutionMix,
+    /// A component > 0 makes the world wrap along that axis with that period, positions kept in
+    /// [0, period); 0 leaves the axis open (default (0, 0)). Each period must be at least twice
+    /// the largest circle diameter plus a cell. See [`World::unwrapped`].
+    pub period: Vec2,
 }
 
 impl Default for WorldDef {
@@ -52,6 +91,14 @@ impl Default for WorldDef {
             rest_speed: d.rest_speed,
             cell_size: d.cell_size,
             max_events: d.max_events,
+            rolling_decel: d.rolling_decel,
+            restitution_mix: match d.restitution_mix {
+                sys::CC_MIX_MAX => RestitutionMix::Max,
+                sys::CC_MIX_PRODUCT => RestitutionMix::Product,
+                sys::CC_MIX_MEAN => RestitutionMix::Mean,
+                _ => RestitutionMix::Min,
+            },
+            period: Vec2::new(d.period.x, d.period.y),
         }
     }
 }
@@ -66,6 +113,8 @@ fn c_default() -> sys::cc_world_def {
 }
 
 /// A circle's id in a world: stable for its lifetime (removed ids may be reused).
+/// `#[repr(transparent)]`: a slice of ids is a C `int` array (the queries write into one).
+#[repr(transparent)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct CircleId(pub i32);
 
@@ -103,6 +152,88 @@ pub struct Stats {
     pub pairs_tested: u64,
     pub cell_crossings: u64,
     pub max_overlap: f64,
+    /// Sum over circle-circle impulses of the impulse times the distance between the centres at
+    /// contact: in a periodic box of area A, the pressure of a hard-disk fluid of N circles is
+    /// P A = N kT + virial / (2 t).
+    pub virial: f64,
+    /// Sum of the impulses on walls (the force on them, times the time).
+    pub wall_impulse: f64,
+}
+
+/// A circle begins or stops overlapping a sensor circle (see [`CircleProps::sensor`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SensorEvent {
+    /// The sensor circle.
+    pub sensor: CircleId,
+    /// The other circle (never a sensor).
+    pub visitor: CircleId,
+    /// `true`: their distance became less than the sum of the radii at `t`; `false`: it is no
+    /// longer less.
+    pub begin: bool,
+    /// World time of the event.
+    pub t: f64,
+}
+
+/// The properties of a circle in a world. A new circle gets the def's restitution and
+/// rolling_decel, category 1, mask `u32::MAX` and is not a sensor; `Default` gives those of a
+/// default [`WorldDef`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CircleProps {
+    /// Its side of a contact's restitution, in [0, 1] (mixed by [`WorldDef::restitution_mix`]).
+    pub restitution: f64,
+    /// Its rolling deceleration (>= 0, finite); ignored for an immovable circle.
+    pub rolling_decel: f64,
+    /// The bits this circle is.
+    pub category: u32,
+    /// The bits it interacts with: two bodies interact when each one's category meets the
+    /// other's mask.
+    pub mask: u32,
+    /// A sensor takes and gives no impulses, touches no wall, and reports the circles that begin
+    /// and stop overlapping it ([`World::with_callbacks`]). At most [`MAX_SENSORS`] at once.
+    pub sensor: bool,
+}
+
+impl Default for CircleProps {
+    fn default() -> Self {
+        CircleProps { restitution: 1.0, rolling_decel: 0.0, category: 1, mask: u32::MAX, sensor: false }
+    }
+}
+
+/// The properties of a wall in a world. A new wall gets the def's restitution, category 1 and
+/// mask `u32::MAX`; `Default` gives those of a default [`WorldDef`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SegmentProps {
+    /// Its side of a contact's restitution, in [0, 1].
+    pub restitution: f64,
+    /// The bits this wall is.
+    pub category: u32,
+    /// The bits it interacts with.
+    pub mask: u32,
+}
+
+impl Default for SegmentProps {
+    fn default() -> Self {
+        SegmentProps { restitution: 1.0, category: 1, mask: u32::MAX }
+    }
+}
+
+/// How many sensors a world holds at once (`CC_MAX_SENSORS`).
+pub const MAX_SENSORS: usize = sys::CC_MAX_SENSORS as usize;
+
+/// What a cast ([`World::cast_circle`]) touched first.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CastHit {
+    /// [`ContactKind::Hit`]: touched at `t` while approaching; [`ContactKind::Overlap`]: the cast
+    /// circle already overlaps `what` at the start (`t` = 0).
+    pub kind: ContactKind,
+    /// The circle or wall touched.
+    pub what: Other,
+    /// In [0, 1]: the cast circle's centre is at p + d t at contact.
+    pub t: f64,
+    /// The contact point.
+    pub point: Vec2,
+    /// Unit normal from the cast circle towards what it touched.
+    pub normal: Vec2,
 }
 
 /// How a step ended.
@@ -119,27 +250,31 @@ pub enum StepOutcome {
 struct Align16([u8; 16]);
 
 type Callback<'cb> = Box<dyn FnMut(&ContactEvent) + 'cb>;
+type SensorCallback<'cb> = Box<dyn FnMut(&SensorEvent) + 'cb>;
 
 struct Slot<'cb> {
-    f: Callback<'cb>,
+    f: Option<Callback<'cb>>,
+    sensor: Option<SensorCallback<'cb>>,
     panic: Option<Box<dyn Any + Send>>,
 }
 
-/// A simulation in memory it owns. `'cb` is the lifetime of what the contact callback borrows.
+/// A simulation in memory it owns. `'cb` is the lifetime of what the callbacks borrow.
 pub struct World<'cb> {
     w: NonNull<sys::cc_world>,
     slot: *mut Slot<'cb>, // owned (Box::into_raw); the C world holds it as `user`
     capacity: usize,
     _memory: Vec<Align16>, // the world lives here; a Vec's heap block never moves with World
-    _cb: PhantomData<Callback<'cb>>,
+    _cb: PhantomData<(Callback<'cb>, SensorCallback<'cb>)>,
 }
 
 unsafe extern "C" fn trampoline(event: *const sys::cc_contact_event, user: *mut c_void) {
-    // SAFETY: user is the Slot this World registered; the C library calls back only inside
-    // cc_world_step, which World::step calls with &mut self, so nothing else touches the slot.
+    // SAFETY: user is the Slot this World registered; the C library calls back only inside the
+    // calls that World makes with &mut self (step, add, set, set props), so nothing else touches
+    // the slot.
     let slot = unsafe { &mut *(user as *mut Slot<'_>) };
+    let Some(f) = slot.f.as_mut() else { return };
     if slot.panic.is_some() {
-        return; // a panic is pending: report no more contacts in this step
+        return; // a panic is pending: report nothing more in this call
     }
     let e = unsafe { *event };
     let event = ContactEvent {
@@ -151,7 +286,22 @@ unsafe extern "C" fn trampoline(event: *const sys::cc_contact_event, user: *mut 
         impulse: e.impulse,
     };
     // A panic must not unwind through C: keep it and resume it when the step returns.
-    if let Err(p) = catch_unwind(AssertUnwindSafe(|| (slot.f)(&event))) {
+    if let Err(p) = catch_unwind(AssertUnwindSafe(|| f(&event))) {
+        slot.panic = Some(p);
+    }
+}
+
+unsafe extern "C" fn sensor_trampoline(event: *const sys::cc_sensor_event, user: *mut c_void) {
+    // SAFETY: as for `trampoline`: the same slot, reached only from calls made with &mut self.
+    let slot = unsafe { &mut *(user as *mut Slot<'_>) };
+    let Some(f) = slot.sensor.as_mut() else { return };
+    if slot.panic.is_some() {
+        return;
+    }
+    let e = unsafe { *event };
+    let event = SensorEvent { sensor: CircleId(e.sensor), visitor: CircleId(e.visitor), begin: e.begin != 0, t: e.t };
+    // Same scheme as contacts: the panic is kept and resumed when the C call has returned.
+    if let Err(p) = catch_unwind(AssertUnwindSafe(|| f(&event))) {
         slot.panic = Some(p);
     }
 }
@@ -163,7 +313,7 @@ fn c_int_of(v: usize) -> Result<c_int> {
 impl World<'static> {
     /// A world without a contact callback.
     pub fn new(def: &WorldDef) -> Result<World<'static>> {
-        World::build(def, None)
+        World::build(def, None, None)
     }
 }
 
@@ -192,10 +342,48 @@ impl<'cb> World<'cb> {
     /// w.step(1.0).unwrap();
     /// ```
     pub fn with_callback(def: &WorldDef, on_contact: impl FnMut(&ContactEvent) + 'cb) -> Result<World<'cb>> {
-        World::build(def, Some(Box::new(on_contact)))
+        World::build(def, Some(Box::new(on_contact)), None)
     }
 
-    fn build(def: &WorldDef, cb: Option<Callback<'cb>>) -> Result<World<'cb>> {
+    /// A world that calls `on_contact` for every impulse and `on_sensor` for every sensor event
+    /// (a circle beginning or ending an overlap with a sensor circle), in time order, from inside
+    /// the calls that cause them (`step`; in EXACT also `add_circle`, `set_circle` and
+    /// `set_circle_props`). A panic in either closure is resumed when that call returns (the
+    /// world stays consistent; no more events are reported in that call). Two closures may not
+    /// both borrow the same thing mutably: share a `RefCell` or a channel when they must.
+    ///
+    /// ```
+    /// use circlecollide::*;
+    /// let (mut hits, mut sensed) = (Vec::new(), Vec::new());
+    /// let mut w = World::with_callbacks(
+    ///     &WorldDef::default(),
+    ///     |e: &ContactEvent| hits.push(e.t),
+    ///     |e: &SensorEvent| sensed.push((e.begin, e.t)),
+    /// )
+    /// .unwrap();
+    /// let goal = w.add_circle(&Circle::new(Vec2::new(10.0, 0.0), Vec2::new(0.0, 0.0), 2.0).immovable()).unwrap();
+    /// w.set_circle_props(goal, &CircleProps { sensor: true, ..w.circle_props(goal).unwrap() }).unwrap();
+    /// w.add_circle(&Circle::new(Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), 1.0)).unwrap();
+    /// w.step(20.0).unwrap();
+    /// drop(w);
+    /// // the ball's edge reaches the goal's at x = 7 and leaves it at x = 13, passing through
+    /// assert_eq!(sensed, [(true, 7.0), (false, 13.0)]);
+    /// assert!(hits.is_empty());
+    /// ```
+    pub fn with_callbacks(
+        def: &WorldDef,
+        on_contact: impl FnMut(&ContactEvent) + 'cb,
+        on_sensor: impl FnMut(&SensorEvent) + 'cb,
+    ) -> Result<World<'cb>> {
+        World::build(def, Some(Box::new(on_contact)), Some(Box::new(on_sensor)))
+    }
+
+    /// A world with a sensor callback only (see [`World::with_callbacks`]).
+    pub fn with_sensor_callback(def: &WorldDef, on_sensor: impl FnMut(&SensorEvent) + 'cb) -> Result<World<'cb>> {
+        World::build(def, None, Some(Box::new(on_sensor)))
+    }
+
+    fn build(def: &WorldDef, cb: Option<Callback<'cb>>, sensor_cb: Option<SensorCallback<'cb>>) -> Result<World<'cb>> {
         let mut d = c_default();
         d.struct_size = core::mem::size_of::<sys::cc_world_def>();
         d.max_circles = c_int_of(def.max_circles)?;
@@ -209,11 +397,24 @@ impl<'cb> World<'cb> {
         d.rest_speed = def.rest_speed;
         d.cell_size = def.cell_size;
         d.max_events = def.max_events;
-        let slot = cb.map_or(core::ptr::null_mut(), |f| Box::into_raw(Box::new(Slot { f, panic: None })));
+        d.rolling_decel = def.rolling_decel;
+        d.restitution_mix = def.restitution_mix.to_c();
+        d.period = sys::cc_vec2 { x: def.period.x, y: def.period.y };
+        let (has_contact, has_sensor) = (cb.is_some(), sensor_cb.is_some());
+        let slot = if has_contact || has_sensor {
+            Box::into_raw(Box::new(Slot { f: cb, sensor: sensor_cb, panic: None }))
+        } else {
+            core::ptr::null_mut()
+        };
         // From here on, `slot` must be freed on every path: make the World first.
         let mut world = World { w: NonNull::dangling(), slot, capacity: def.max_circles, _memory: Vec::new(), _cb: PhantomData };
-        if !slot.is_null() {
+        if has_contact {
             d.on_contact = Some(trampoline);
+        }
+        if has_sensor {
+            d.on_sensor = Some(sensor_trampoline);
+        }
+        if !slot.is_null() {
             d.user = slot.cast();
         }
         let bytes = unsafe { sys::cc_world_size(&d) };
@@ -228,10 +429,14 @@ impl<'cb> World<'cb> {
         Ok(world)
     }
 
-    /// Adds a circle (its state at the current world time).
+    /// Adds a circle (its state at the current world time). In EXACT, a circle added on top of
+    /// others is pushed apart at once (the contact callback may run, and a sensor callback when
+    /// it lands in a sensor); a panic there is resumed before this returns.
     pub fn add_circle(&mut self, c: &Circle) -> Result<CircleId> {
         let c: *const Circle = c;
-        check(unsafe { sys::cc_world_add_circle(self.w.as_ptr(), c.cast()) }).map(CircleId)
+        let code = unsafe { sys::cc_world_add_circle(self.w.as_ptr(), c.cast()) };
+        self.resume_panic();
+        check(code).map(CircleId)
     }
 
     /// Adds a static wall.
@@ -252,10 +457,12 @@ impl<'cb> World<'cb> {
         Ok(out)
     }
 
-    /// Replaces the circle's state now.
+    /// Replaces the circle's state now (callbacks as for [`World::add_circle`]).
     pub fn set_circle(&mut self, id: CircleId, c: &Circle) -> Result<()> {
         let c: *const Circle = c;
-        check(unsafe { sys::cc_world_set_circle(self.w.as_ptr(), id.0, c.cast()) }).map(drop)
+        let code = unsafe { sys::cc_world_set_circle(self.w.as_ptr(), id.0, c.cast()) };
+        self.resume_panic();
+        check(code).map(drop)
     }
 
     /// The wall's end points.
@@ -290,13 +497,18 @@ impl<'cb> World<'cb> {
     /// the C step has returned (the world stays consistent).
     pub fn step(&mut self, dt: f64) -> Result<StepOutcome> {
         let code = unsafe { sys::cc_world_step(self.w.as_ptr(), dt) };
+        self.resume_panic();
+        Ok(if check(code)? == sys::CC_EVENT_LIMIT { StepOutcome::EventLimit } else { StepOutcome::Done })
+    }
+
+    /// Resumes a panic that a callback raised during the C call that just returned.
+    fn resume_panic(&mut self) {
         if !self.slot.is_null() {
-            // SAFETY: the C step has returned; we hold &mut self.
+            // SAFETY: the C call has returned; we hold &mut self.
             if let Some(p) = unsafe { (*self.slot).panic.take() } {
                 resume_unwind(p);
             }
         }
-        Ok(if check(code)? == sys::CC_EVENT_LIMIT { StepOutcome::EventLimit } else { StepOutcome::Done })
     }
 
     /// Current world time.
@@ -315,9 +527,156 @@ impl<'cb> World<'cb> {
             pairs_tested: s.pairs_tested,
             cell_crossings: s.cell_crossings,
             max_overlap: s.max_overlap,
+            virial: s.virial,
+            wall_impulse: s.wall_impulse,
         }
     }
+
+    /// The position of a circle without the periods taken off (see [`WorldDef::period`]): where
+    /// it would be had the world not wrapped, for displacements over many periods. Along an
+    /// open axis, its position.
+    pub fn unwrapped(&self, id: CircleId) -> Result<Vec2> {
+        let mut out = sys::cc_vec2::default();
+        check(unsafe { sys::cc_world_get_unwrapped(self.w.as_ptr(), id.0, &mut out) })?;
+        Ok(Vec2::new(out.x, out.y))
+    }
+
+    /// The circle's properties.
+    pub fn circle_props(&self, id: CircleId) -> Result<CircleProps> {
+        let mut p = sys::cc_circle_props { struct_size: core::mem::size_of::<sys::cc_circle_props>(), ..Default::default() };
+        check(unsafe { sys::cc_world_get_circle_props(self.w.as_ptr(), id.0, &mut p) })?;
+        Ok(CircleProps {
+            restitution: p.restitution,
+            rolling_decel: p.rolling_decel,
+            category: p.category,
+            mask: p.mask,
+            sensor: p.sensor != 0,
+        })
+    }
+
+    /// Sets the circle's properties at the current world time. A value out of range is
+    /// `Invalid` and changes nothing; making the [`MAX_SENSORS`] + 1st sensor is `Full`. In
+    /// EXACT a change may fire the callbacks at once (a pair that now interacts while
+    /// overlapping is pushed apart; a circle that now overlaps a sensor, or no longer does, gets
+    /// its event); a panic there is resumed before this returns.
+    pub fn set_circle_props(&mut self, id: CircleId, props: &CircleProps) -> Result<()> {
+        let p = sys::cc_circle_props {
+            struct_size: core::mem::size_of::<sys::cc_circle_props>(),
+            restitution: props.restitution,
+            rolling_decel: props.rolling_decel,
+            category: props.category,
+            mask: props.mask,
+            sensor: props.sensor as c_int,
+        };
+        let code = unsafe { sys::cc_world_set_circle_props(self.w.as_ptr(), id.0, &p) };
+        self.resume_panic();
+        check(code).map(drop)
+    }
+
+    /// The wall's properties.
+    pub fn segment_props(&self, id: SegmentId) -> Result<SegmentProps> {
+        let mut p = sys::cc_segment_props { struct_size: core::mem::size_of::<sys::cc_segment_props>(), ..Default::default() };
+        check(unsafe { sys::cc_world_get_segment_props(self.w.as_ptr(), id.0, &mut p) })?;
+        Ok(SegmentProps { restitution: p.restitution, category: p.category, mask: p.mask })
+    }
+
+    /// Sets the wall's properties (a value out of range is `Invalid` and changes nothing).
+    pub fn set_segment_props(&mut self, id: SegmentId, props: &SegmentProps) -> Result<()> {
+        let p = sys::cc_segment_props {
+            struct_size: core::mem::size_of::<sys::cc_segment_props>(),
+            restitution: props.restitution,
+            category: props.category,
+            mask: props.mask,
+        };
+        let code = unsafe { sys::cc_world_set_segment_props(self.w.as_ptr(), id.0, &p) };
+        self.resume_panic();
+        check(code).map(drop)
+    }
+
+    /// The first circle or wall that a circle of `radius` (finite, >= 0; 0 casts a ray) moving
+    /// from `p` to `p + d` touches, the world held still at its current time: the earliest t in
+    /// [0, 1] at which it touches one while approaching. Only bodies whose category meets
+    /// `mask`; sensors are skipped. `Ok(None)` when it touches nothing; an overlap at `p` is a
+    /// hit of kind [`ContactKind::Overlap`] at t = 0. Equal times go to the lowest circle id,
+    /// then the lowest wall id. A cue ball's aiming line: the object ball moves off along
+    /// `normal`.
+    pub fn cast_circle(&self, p: Vec2, radius: f64, d: Vec2, mask: u32) -> Result<Option<CastHit>> {
+        let mut out = sys::cc_cast_hit::default();
+        let code = check(unsafe {
+            sys::cc_world_cast_circle(self.w.as_ptr(), sys::cc_vec2 { x: p.x, y: p.y }, radius, sys::cc_vec2 { x: d.x, y: d.y }, mask, &mut out)
+        })?;
+        let kind = match code {
+            sys::CC_HIT => ContactKind::Hit,
+            sys::CC_OVERLAP => ContactKind::Overlap,
+            _ => return Ok(None),
+        };
+        Ok(Some(CastHit {
+            kind,
+            what: if out.circle >= 0 { Other::Circle(CircleId(out.circle)) } else { Other::Wall(SegmentId(out.segment)) },
+            t: out.t,
+            point: Vec2::new(out.point.x, out.point.y),
+            normal: Vec2::new(out.normal.x, out.normal.y),
+        }))
+    }
+
+    /// The circles that overlap the disc of centre `c` and `radius` (>= 0, finite): their
+    /// distance less than the sum of the radii (radius 0: the circles whose interior holds c),
+    /// whose category meets `mask`, sensors included. Writes the first `ids.len()` of them in
+    /// increasing id order into `ids` and returns how many there are (which may be more).
+    pub fn query_circle(&self, c: Vec2, radius: f64, mask: u32, ids: &mut [CircleId]) -> Result<usize> {
+        let cap = c_int::try_from(ids.len()).unwrap_or(c_int::MAX);
+        // SAFETY: CircleId is repr(transparent) over i32 = c_int; the C side writes at most cap.
+        let n = unsafe { sys::cc_world_query_circle(self.w.as_ptr(), sys::cc_vec2 { x: c.x, y: c.y }, radius, mask, ids.as_mut_ptr().cast(), cap) };
+        check(n).map(|n| n as usize)
+    }
+
+    /// [`World::query_circle`] into a new `Vec` holding them all.
+    pub fn query_circle_vec(&self, c: Vec2, radius: f64, mask: u32) -> Result<Vec<CircleId>> {
+        collect_ids(|ids| self.query_circle(c, radius, mask, ids))
+    }
+
+    /// The circles that meet the closed box [lo, hi] (the closed disc against the box, exactly:
+    /// a circle whose distance from the box equals its radius counts), whose category meets
+    /// `mask`, sensors included; lo <= hi in both coordinates, all finite. Written and counted
+    /// as by [`World::query_circle`].
+    pub fn query_box(&self, lo: Vec2, hi: Vec2, mask: u32, ids: &mut [CircleId]) -> Result<usize> {
+        let cap = c_int::try_from(ids.len()).unwrap_or(c_int::MAX);
+        // SAFETY: as in query_circle.
+        let n = unsafe {
+            sys::cc_world_query_box(self.w.as_ptr(), sys::cc_vec2 { x: lo.x, y: lo.y }, sys::cc_vec2 { x: hi.x, y: hi.y }, mask, ids.as_mut_ptr().cast(), cap)
+        };
+        check(n).map(|n| n as usize)
+    }
+
+    /// [`World::query_box`] into a new `Vec` holding them all.
+    pub fn query_box_vec(&self, lo: Vec2, hi: Vec2, mask: u32) -> Result<Vec<CircleId>> {
+        collect_ids(|ids| self.query_box(lo, hi, mask, ids))
+    }
+
+    /// A 64-bit hash of the simulation state: the time, every live circle (id, state as
+    /// [`World::circle`] gives it, properties, sensor overlaps), every wall and its properties,
+    /// and the def's settings (not the callbacks). Equal states give equal hashes (on another
+    /// world fed the same calls, on another machine); a state one bit apart gives another. For
+    /// replays and lock-step networking: compare hashes to find where two runs part.
+    pub fn hash(&self) -> u64 {
+        unsafe { sys::cc_world_hash(self.w.as_ptr()) }
+    }
 }
+
+/// Runs a query into a buffer, growing it to the count the query reports.
+fn collect_ids(mut query: impl FnMut(&mut [CircleId]) -> Result<usize>) -> Result<Vec<CircleId>> {
+    let mut ids = vec![CircleId(-1); 32];
+    let n = query(&mut ids)?;
+    if n > ids.len() {
+        ids.resize(n, CircleId(-1));
+        let again = query(&mut ids)?;
+        debug_assert_eq!(again, n, "the world did not change between the two calls");
+    }
+    ids.truncate(n);
+    Ok(ids)
+}
+
+const _: () = assert!(core::mem::size_of::<CircleId>() == core::mem::size_of::<c_int>());
 
 impl Drop for World<'_> {
     fn drop(&mut self) {
