@@ -5,10 +5,15 @@ use crate::{check, sys, Error, Result};
 /// Columns of n circles (positions, velocities, radii), borrowed for one call.
 #[derive(Debug, Clone, Copy)]
 pub struct Columns<'a> {
+    /// Centres' x.
     pub px: &'a [f64],
+    /// Centres' y.
     pub py: &'a [f64],
+    /// Velocities' x.
     pub vx: &'a [f64],
+    /// Velocities' y.
     pub vy: &'a [f64],
+    /// Radii.
     pub radius: &'a [f64],
 }
 
@@ -19,6 +24,7 @@ impl<'a> Columns<'a> {
         [self.py.len(), self.vx.len(), self.vy.len(), self.radius.len()].iter().all(|&m| m == n).then_some(n)
     }
 
+    /// True when the columns are all empty.
     pub fn is_empty(&self) -> bool {
         self.len() == Some(0)
     }

@@ -16,6 +16,7 @@
 //! ```
 //!
 //! [`World`] (when the C library has it) simulates many circles and walls in memory it owns.
+#![deny(missing_docs)]
 
 use core::ffi::{c_int, CStr};
 use core::fmt;
@@ -65,6 +66,7 @@ impl Error {
         self.code
     }
 
+    /// The kind of the code.
     pub fn kind(&self) -> ErrorKind {
         match self.code {
             sys::CC_ERR_INVALID => ErrorKind::Invalid,
@@ -96,6 +98,7 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+/// The result of every fallible call.
 pub type Result<T> = core::result::Result<T, Error>;
 
 pub(crate) fn check(code: c_int) -> Result<c_int> {
@@ -134,11 +137,14 @@ pub fn version_matches() -> bool {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Vec2<T = f64> {
+    /// The x coordinate.
     pub x: T,
+    /// The y coordinate.
     pub y: T,
 }
 
 impl<T> Vec2<T> {
+    /// The vector (x, y).
     pub const fn new(x: T, y: T) -> Self {
         Vec2 { x, y }
     }
@@ -149,9 +155,13 @@ impl<T> Vec2<T> {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Circle<T = f64> {
+    /// Centre at t = 0.
     pub pos: Vec2<T>,
+    /// Constant velocity: displacement per unit time.
     pub vel: Vec2<T>,
+    /// Finite, > 0.
     pub radius: T,
+    /// Finite and > 0, or infinite for an immovable circle.
     pub mass: T,
 }
 
@@ -161,6 +171,7 @@ impl<T: Real> Circle<T> {
         Circle { pos, vel, radius, mass: T::ONE }
     }
 
+    /// A copy with this mass.
     pub fn with_mass(self, mass: T) -> Self {
         Circle { mass, ..self }
     }
@@ -180,16 +191,20 @@ impl<T: Real> Circle<T> {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Segment<T = f64> {
+    /// One end.
     pub a: Vec2<T>,
+    /// The other end.
     pub b: Vec2<T>,
 }
 
 impl<T> Segment<T> {
+    /// The wall from a to b.
     pub const fn new(a: Vec2<T>, b: Vec2<T>) -> Self {
         Segment { a, b }
     }
 }
 
+/// Whether a contact is a touch ahead or an overlap now.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ContactKind {
     /// First touch at `t`, the bodies approaching.
@@ -201,10 +216,15 @@ pub enum ContactKind {
 /// A contact: time, point, unit normal (from a towards b or the wall) and penetration depth.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Contact<T = f64> {
+    /// A hit ahead or an overlap at t = 0.
     pub kind: ContactKind,
+    /// Time of first contact (0 for an overlap).
     pub t: T,
+    /// Contact point at time t.
     pub point: Vec2<T>,
+    /// Unit normal at time t from a towards b (or the wall).
     pub normal: Vec2<T>,
+    /// Penetration depth: 0 for a hit, > 0 for an overlap.
     pub depth: T,
 }
 
@@ -264,7 +284,9 @@ mod sealed {
 pub trait Real:
     Copy + PartialOrd + fmt::Debug + Default + core::ops::Add<Output = Self> + core::ops::Mul<Output = Self> + sealed::Sealed + 'static
 {
+    /// 1 in this precision.
     const ONE: Self;
+    /// +infinity in this precision (an immovable circle's mass).
     const INFINITY: Self;
     #[doc(hidden)]
     unsafe fn c_detect_static(a: *const Circle<Self>, b: *const Circle<Self>, out: *mut RawContact<Self>) -> c_int;

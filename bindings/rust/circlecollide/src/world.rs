@@ -52,8 +52,11 @@ impl RestitutionMix {
 /// The world's settings; `WorldDef::default()` holds the library's defaults.
 #[derive(Debug, Clone, PartialEq)]
 pub struct WorldDef {
+    /// Capacity for circles (default 64).
     pub max_circles: usize,
+    /// Capacity for walls (default 0: a scene without walls pays nothing).
     pub max_segments: usize,
+    /// How the world advances (default [`Mode::Exact`]).
     pub mode: Mode,
     /// Coefficient of restitution of every contact, in [0, 1]; since 1.1 the restitution a new
     /// circle or wall gets (its properties may then change it).
@@ -125,17 +128,22 @@ pub struct SegmentId(pub i32);
 /// What circle `a` hit.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Other {
+    /// Another circle.
     Circle(CircleId),
+    /// A wall.
     Wall(SegmentId),
 }
 
 /// One impulse the world applied.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ContactEvent {
+    /// The circle that took the impulse.
     pub a: CircleId,
+    /// What it hit.
     pub other: Other,
     /// World time of the contact.
     pub t: f64,
+    /// The contact point.
     pub point: Vec2,
     /// Unit normal from a towards the other body.
     pub normal: Vec2,
@@ -146,11 +154,17 @@ pub struct ContactEvent {
 /// Counters since the world was made.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct Stats {
+    /// Impulses applied: circle-circle and circle-wall.
     pub collisions: u64,
+    /// Events processed: impacts, cell crossings, stale events.
     pub events: u64,
+    /// Predicted events found invalid when their time came.
     pub stale_events: u64,
+    /// Pair tests made (sweeps and static tests).
     pub pairs_tested: u64,
+    /// Grid cell changes processed (EXACT).
     pub cell_crossings: u64,
+    /// The deepest overlap seen.
     pub max_overlap: f64,
     /// Sum over circle-circle impulses of the impulse times the distance between the centres at
     /// contact: in a periodic box of area A, the pressure of a hard-disk fluid of N circles is
@@ -445,6 +459,7 @@ impl<'cb> World<'cb> {
         check(unsafe { sys::cc_world_add_segment(self.w.as_ptr(), s.cast()) }).map(SegmentId)
     }
 
+    /// Removes a circle (a pocketed ball); other ids are unchanged. Not from a callback.
     pub fn remove_circle(&mut self, id: CircleId) -> Result<()> {
         check(unsafe { sys::cc_world_remove_circle(self.w.as_ptr(), id.0) }).map(drop)
     }
@@ -489,6 +504,7 @@ impl<'cb> World<'cb> {
         n.max(0) as usize
     }
 
+    /// True when no circle lives in the world.
     pub fn is_empty(&self) -> bool {
         self.len() == 0
     }
@@ -516,6 +532,7 @@ impl<'cb> World<'cb> {
         unsafe { sys::cc_world_time(self.w.as_ptr()) }
     }
 
+    /// The counters since the world was made.
     pub fn stats(&self) -> Stats {
         let mut s = sys::cc_world_stats { struct_size: core::mem::size_of::<sys::cc_world_stats>(), ..Default::default() };
         // cannot fail: the world and the struct are valid
