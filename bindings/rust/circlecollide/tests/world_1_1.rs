@@ -404,3 +404,37 @@ fn periodic_boxes_wrap_positions_and_unwrapped_does_not() {
     open.step(2.0).unwrap();
     assert_eq!(open.unwrapped(o).unwrap(), open.circle(o).unwrap().pos);
 }
+
+#[test]
+fn sensors_in_swept_and_discrete_report_at_the_end_of_the_step() {
+    // the ball of the EXACT scene above (begin at t = 7, end at t = 13), stepped by 4: the
+    // overlap is seen at the ends of the steps, t = 8 (x = 8) and t = 16 (x = 16, out again)
+    for mode in [Mode::Swept, Mode::Discrete] {
+        let mut events = Vec::new();
+        {
+            let mut w = World::with_sensor_callback(&WorldDef { mode, ..def(2, 0) }, |e: &SensorEvent| events.push((e.begin, e.t))).unwrap();
+            let s = w.add_circle(&Circle::new(v(10.0, 0.0), v(0.0, 0.0), 2.0).immovable()).unwrap();
+            w.set_circle_props(s, &CircleProps { sensor: true, ..Default::default() }).unwrap();
+            w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
+            for _ in 0..5 {
+                w.step(4.0).unwrap();
+            }
+        }
+        assert_eq!(events, [(true, 8.0), (false, 16.0)], "{mode:?}");
+    }
+}
+
+#[test]
+fn queries_and_casts_see_across_the_period() {
+    // period 10 in x and y; circle 0 of radius 0.5 at (0.5, 5). A disc at (9.8, 5) of radius 0.5
+    // is 0.7 from its image at (10.5, 5) (< 1): found; a box [9, 9.9] x [4, 6] is 0.6 from it
+    // (> 0.5): not. A circle of radius 0.5 cast from (7, 5) along (4, 0) touches the image with
+    // its centre at 9.5: t = 2.5 / 4 = 0.625.
+    let mut w = World::new(&WorldDef { period: v(10.0, 10.0), ..def(1, 0) }).unwrap();
+    let a = w.add_circle(&Circle::new(v(0.5, 5.0), v(0.0, 0.0), 0.5)).unwrap();
+    w.step(0.0).unwrap();
+    assert_eq!(w.query_circle_vec(v(9.8, 5.0), 0.5, u32::MAX).unwrap(), [a]);
+    assert_eq!(w.query_box_vec(v(9.0, 4.0), v(9.9, 6.0), u32::MAX).unwrap(), []);
+    let h = w.cast_circle(v(7.0, 5.0), 0.5, v(4.0, 0.0), u32::MAX).unwrap().unwrap();
+    assert!(h.what == Other::Circle(a) && close(h.t, 0.625) && close(h.normal.x, 1.0), "{h:?}");
+}
