@@ -120,6 +120,9 @@ int cc__step_exact(cc_world *w, double t_end)
             if (dir == CC__DIR_STOP) { /* a rolling body at rest: it predicts nothing from here on */
                 cc__roll_stop(w, i);
                 cc__predict(w, i);
+                /* the hits it had found after its stop were dropped with its event (a body at
+                 * rest holds none): the movers near it look again, as for a body set at rest */
+                cc__predict_neighbours(w, i);
                 continue;
             }
             w->stats.cell_crossings++;

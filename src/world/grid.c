@@ -93,9 +93,29 @@ void cc__grid_move(cc_world *w, int id, int dir)
     cc__link(w, id, cc__head_of(w, id));
 }
 
+/* x - n P for the integer n that leaves a result in (-P, P) with the sign of x, exactly (what
+ * fmod computes), by long division with powers of two: the library calls no more of libm than
+ * sqrt/fabs/frexp/ldexp/floor/ceil (the embedded build checks it). Each subtraction is of q from
+ * a with q <= a < 2q, exact (Sterbenz). */
+static double cc__mod_exact(double x, double P)
+{
+    double a = fabs(x);
+    int ea, ep, k;
+    if (a < P)
+        return x;
+    (void)frexp(a, &ea);
+    (void)frexp(P, &ep);
+    for (k = ea - ep; k >= 0; k--) { /* a < 2 P 2^k holds at every k */
+        double q = ldexp(P, k);
+        if (a >= q)
+            a -= q;
+    }
+    return x < 0.0 ? -a : a;
+}
+
 double cc__wrap_coord(const cc_world *w, double x, int k, int32_t *turns)
 {
-    double P = w->period[k], r = fmod(x, P);
+    double P = w->period[k], r = cc__mod_exact(x, P);
     if (r < 0.0)
         r += P; /* a tiny negative remainder may round to P itself: that is 0 again */
     if (r >= P)

@@ -268,6 +268,10 @@ void cc__settle_body(cc_world *w, int id)
 
 void cc__settle_props(cc_world *w, int id)
 {
+    if (w->features & CC__F_ROLL) { /* its deceleration may be another: from now on */
+        cc__advance_body(w, &CC__ARR(w, cc__body, off_body)[id], w->now);
+        cc__roll_reset(w, id);
+    }
     if (w->mode != CC_MODE_EXACT) {
         cc__sensor_refresh(w, id);
         return; /* the other modes look at everything again at each step */
@@ -277,8 +281,6 @@ void cc__settle_props(cc_world *w, int id)
     /* where it is: others' predictions with it go stale, pairs that now interact are pushed
      * apart, and everything about it is predicted again */
     cc__advance_body(w, &CC__ARR(w, cc__body, off_body)[id], w->now); /* the push-apart reads it at now */
-    if (w->features & CC__F_ROLL)
-        cc__roll_reset(w, id); /* its deceleration may be another */
     CC__ARR(w, cc__body, off_body)[id].count++;
     cc__unoverlap_body(w, id, 0);
     cc__settle_after(w, id);

@@ -90,7 +90,10 @@ CC__NOINLINE void cc__try_roll(const cc_world *w, int i, int j, double sx, doubl
     if (bi->vx == 0.0 && bi->vy == 0.0 && vxj == 0.0 && vyj == 0.0)
         return;
     ++*tests;
-    r = cc__roll_sweep(dpx, dpy, bi->vx, bi->vy, ki, vxj, vyj, kj, R, best->t - now, -1, &t, &nx, &ny);
+    speeds = fabs(bi->vx) + fabs(bi->vy) + fabs(vxj) + fabs(vyj);
+    r = cc__roll_sweep(dpx, dpy, bi->vx, bi->vy, ki, vxj, vyj, kj, R, best->t - now, -1,
+                       2.0 * (0x1p-40 * speeds > w->rest_speed * 0x1p-20 ? 0x1p-40 * speeds : w->rest_speed * 0x1p-20),
+                       &t, &nx, &ny);
     if (r == CC_MISS || !(now + t < best->t))
         return;
     cc__roll_motion(ki, t, &gi, &gdi);

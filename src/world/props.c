@@ -18,6 +18,7 @@ static const size_t cc__segment_props_ends[] = {
 
 void cc__props_default(const cc_world *w, cc__props *p)
 {
+    memset(p, 0, sizeof *p); /* the rolling state and the periods' turns start at 0 */
     p->restitution = w->restitution;
     p->decel = w->rolling_decel;
     p->inside = 0;

@@ -48,14 +48,40 @@ typedef struct cc__pair_path {
     double dpx, dpy;   /* offset b - a at t = 0 */
     double vax, vay, ka, vbx, vby, kb;
     double R;
+    /* within the piece searched: whether each circle still rolls there (then its motion is the
+     * polynomial itself, up to and at the piece's end, its stop: f and its derivatives are those
+     * of the piece at both ends, not the resting circle's at the stop, which would hide a sign
+     * change at the end, as f'' < 0 at the stop of a ball rolling away from one at rest);
+     * -1: by the clock (the motion of the circle at t, clamped at its stop) */
+    int a_on, b_on;
 } cc__pair_path;
+
+/* Motion of one circle within the piece: on (1 rolls, 0 rests or never rolled, -1 by clock). */
+static void cc__piece_motion(double k, int on, double t, double *g, double *gd)
+{
+    if (on < 0 || k == 0.0) {
+        cc__roll_motion(k, t, g, gd);
+    } else if (on) {
+        *g = t * (1.0 - k * t);
+        *gd = 1.0 - 2.0 * k * t;
+    } else {
+        *g = 0.25 / k;
+        *gd = 0.0;
+    }
+}
+
+/* Whether a circle with coefficient k rolls at time t of a piece (by the clock when on < 0). */
+static int cc__rolls(double k, int on, double t)
+{
+    return on < 0 ? (k > 0.0 && t < 0.5 / k) : (k > 0.0 && on);
+}
 
 /* The offset at t (from t = 0). */
 static void cc__offset(const cc__pair_path *p, double t, double *x, double *y, double *dx, double *dy)
 {
     double ga, gda, gb, gdb;
-    cc__roll_motion(p->ka, t, &ga, &gda);
-    cc__roll_motion(p->kb, t, &gb, &gdb);
+    cc__piece_motion(p->ka, p->a_on, t, &ga, &gda);
+    cc__piece_motion(p->kb, p->b_on, t, &gb, &gdb);
     *x = p->dpx + (p->vbx * gb - p->vax * ga);
     *y = p->dpy + (p->vby * gb - p->vay * ga);
     *dx = p->vbx * gdb - p->vax * gda; /* the rate of change of the offset */
@@ -68,9 +94,9 @@ static void cc__f(const cc__pair_path *p, double t, double d[4])
 {
     double x, y, dx, dy, ax = 0.0, ay = 0.0, len;
     cc__offset(p, t, &x, &y, &dx, &dy);
-    if (p->kb > 0.0 && t < 0.5 / p->kb)
+    if (cc__rolls(p->kb, p->b_on, t))
         ax += -2.0 * p->kb * p->vbx, ay += -2.0 * p->kb * p->vby;
-    if (p->ka > 0.0 && t < 0.5 / p->ka)
+    if (cc__rolls(p->ka, p->a_on, t))
         ax -= -2.0 * p->ka * p->vax, ay -= -2.0 * p->ka * p->vay;
     len = sqrt(x * x + y * y);
     d[0] = (len - p->R) * (len + p->R);
@@ -143,26 +169,120 @@ static double cc__first_crossing(const cc__pair_path *p, double lo, double hi, i
     return -1.0;
 }
 
+/* The first t in [lo, hi] at which the pair closes at vmin or faster (f' <= -2 |o| vmin), or -1:
+ * the sign changes of f' split the piece into monotone parts, each bisected where it crosses. */
+static double cc__closing_at(const cc__pair_path *p, double lo, double hi, double vmin)
+{
+    double cuts[8], d[4];
+    int m = 1, k;
+    cuts[0] = lo;
+    m += cc__sign_changes(p, 2, lo, hi, cuts + 1);
+    cuts[m++] = hi;
+    for (k = 0; k + 1 < m; k++) {
+        double a = cuts[k], b = cuts[k + 1], x, y, dx, dy, ga, gb;
+        cc__offset(p, a, &x, &y, &dx, &dy);
+        cc__f(p, a, d);
+        ga = d[1] + 2.0 * sqrt(x * x + y * y) * vmin;
+        cc__offset(p, b, &x, &y, &dx, &dy);
+        cc__f(p, b, d);
+        gb = d[1] + 2.0 * sqrt(x * x + y * y) * vmin;
+        if (ga <= 0.0 && a > lo)
+            return a;
+        if (ga > 0.0 && gb <= 0.0) { /* bisect g = f' + 2 |o| vmin, monotone enough here */
+            for (;;) {
+                double mid = a + 0.5 * (b - a), gm;
+                if (!(mid > a && mid < b))
+                    return b;
+                cc__offset(p, mid, &x, &y, &dx, &dy);
+                cc__f(p, mid, d);
+                gm = d[1] + 2.0 * sqrt(x * x + y * y) * vmin;
+                if (gm > 0.0)
+                    a = mid;
+                else
+                    b = mid;
+            }
+        }
+    }
+    return -1.0;
+}
+
+/* Squared distance from point (px, py) to the segment from (ax, ay) to (bx, by). */
+static double cc__point_seg2(double px, double py, double ax, double ay, double bx, double by)
+{
+    double ux = bx - ax, uy = by - ay, wx = px - ax, wy = py - ay, uu = ux * ux + uy * uy, s;
+    s = uu > 0.0 ? (wx * ux + wy * uy) / uu : 0.0;
+    s = s < 0.0 ? 0.0 : s > 1.0 ? 1.0 : s;
+    wx -= s * ux;
+    wy -= s * uy;
+    return wx * wx + wy * wy;
+}
+
+/* Whether the two circles' paths over [0, t_max] (a straight segment each, relative to a's
+ * start) stay further apart than R: then no time brings them to R. Only for finite paths. */
+static int cc__paths_apart(const cc__pair_path *p, double t_max)
+{
+    double ga, gb, gd, ax, ay, bx0, by0, bx1, by1, d2, m, cross1, cross2, cross3, cross4;
+    if (!(t_max < HUGE_VAL) && ((p->ka == 0.0 && (p->vax != 0.0 || p->vay != 0.0)) ||
+                                (p->kb == 0.0 && (p->vbx != 0.0 || p->vby != 0.0))))
+        return 0; /* a path without end */
+    cc__roll_motion(p->ka, t_max, &ga, &gd);
+    cc__roll_motion(p->kb, t_max, &gb, &gd);
+    ax = p->vax * ga, ay = p->vay * ga;           /* a: from (0, 0) to (ax, ay) */
+    bx0 = p->dpx, by0 = p->dpy;                   /* b: from its offset on */
+    bx1 = bx0 + p->vbx * gb, by1 = by0 + p->vby * gb;
+    if (!(fabs(ax) + fabs(ay) + fabs(bx1) + fabs(by1) < HUGE_VAL))
+        return 0;
+    /* crossing segments are 0 apart */
+    cross1 = ax * by0 - ay * bx0;
+    cross2 = ax * by1 - ay * bx1;
+    cross3 = (bx1 - bx0) * (0.0 - by0) - (by1 - by0) * (0.0 - bx0);
+    cross4 = (bx1 - bx0) * (ay - by0) - (by1 - by0) * (ax - bx0);
+    if ((cross1 > 0.0) != (cross2 > 0.0) && (cross3 > 0.0) != (cross4 > 0.0))
+        return 0;
+    d2 = cc__point_seg2(0.0, 0.0, bx0, by0, bx1, by1);
+    m = cc__point_seg2(ax, ay, bx0, by0, bx1, by1);
+    d2 = m < d2 ? m : d2;
+    m = cc__point_seg2(bx0, by0, 0.0, 0.0, ax, ay);
+    d2 = m < d2 ? m : d2;
+    m = cc__point_seg2(bx1, by1, 0.0, 0.0, ax, ay);
+    d2 = m < d2 ? m : d2;
+    m = p->R * (1.0 + 0x1p-20) + 0x1p-40 * (fabs(ax) + fabs(ay) + fabs(bx0) + fabs(by0) + fabs(bx1) + fabs(by1));
+    return d2 > m * m;
+}
+
+/* Which circles roll in the piece starting at lo (the stops sa, sb, -1 for none, are cuts). */
+static void cc__piece(cc__pair_path *p, double sa, double sb, double lo)
+{
+    p->a_on = sa > lo;
+    p->b_on = sb > lo;
+}
+
 int cc__roll_sweep(double dpx, double dpy, double vax, double vay, double ka, double vbx, double vby, double kb,
-                   double R, double t_max, int dir, double *t_out, double *nx, double *ny)
+                   double R, double t_max, int dir, double vmin, double *t_out, double *nx, double *ny)
 {
     cc__pair_path p;
     double cuts[4], t = -1.0, x, y, dx, dy, len, sa, sb, s_lo, s_hi, last;
     int m = 0, k;
     p.dpx = dpx, p.dpy = dpy, p.vax = vax, p.vay = vay, p.ka = ka, p.vbx = vbx, p.vby = vby, p.kb = kb, p.R = R;
+    p.a_on = p.b_on = -1;
     len = sqrt(dpx * dpx + dpy * dpy);
     if (dir < 0) {
         double reach;
-        if (len < R) { /* overlapping now */
+        if (len < R && dpx * (vbx - vax) + dpy * (vby - vay) < 0.0) { /* overlapping now, closing */
             *t_out = 0.0;
             *nx = len > 0.0 ? dpx / len : 1.0;
             *ny = len > 0.0 ? dpy / len : 0.0;
             return CC_OVERLAP;
         }
+        /* (overlapping by rounding but parting: a rolling pair may come back, found below) */
         /* the farthest each can travel (to its stop, or in t_max): a pair further apart misses */
         reach = (ka > 0.0 ? 0.25 / ka : t_max) * sqrt(vax * vax + vay * vay) +
                 (kb > 0.0 ? 0.25 / kb : t_max) * sqrt(vbx * vbx + vby * vby);
         if (len - R > reach * (1.0 + 0x1p-20))
+            return CC_MISS;
+        /* each circle moves along a straight segment (to its stop, or to t_max): two paths
+         * further apart than R, at any times, cannot meet (a bound, with room for rounding) */
+        if (cc__paths_apart(&p, t_max))
             return CC_MISS;
     }
     /* pieces of quadratic motion: from 0 to the first stop, to the second, or to t_max while a
@@ -184,9 +304,26 @@ int cc__roll_sweep(double dpx, double dpy, double vax, double vay, double ka, do
         if (d[0] == 0.0 && (dir < 0 ? d[1] < 0.0 : d[1] > 0.0))
             t = 0.0;
     }
+    if (dir < 0 && t < 0.0 && len < R) {
+        /* closer than R but parting: contact again when they close at vmin, if still closer */
+        for (k = 0; k + 1 < m && t < 0.0; k++)
+            if (cuts[k + 1] > cuts[k]) {
+                cc__piece(&p, sa, sb, cuts[k]);
+                t = cc__closing_at(&p, cuts[k], cuts[k + 1], vmin);
+            }
+        if (t >= 0.0) {
+            double d[4];
+            cc__f(&p, t, d);
+            if (!(d[0] < 0.0))
+                t = -1.0; /* parted first: an ordinary crossing, looked for below */
+        }
+    }
     for (k = 0; k + 1 < m && t < 0.0; k++)
-        if (cuts[k + 1] > cuts[k])
+        if (cuts[k + 1] > cuts[k]) {
+            cc__piece(&p, sa, sb, cuts[k]);
             t = cc__first_crossing(&p, cuts[k], cuts[k + 1], dir);
+        }
+    p.a_on = p.b_on = -1;
     last = cuts[m - 1];
     if (t < 0.0 && last < t_max) {
         /* after the last stop the offset moves on in a straight line (a circle that does not
@@ -318,8 +455,8 @@ int cc__roll_sweep_segment(const cc_circle *c, double k, const cc_segment *s, do
     for (i = 0; i < 2 && !interior; i++) { /* the end points: circles of radius 0 at rest */
         double te, nx, ny;
         cc_vec2 dp = cc__sub(i ? s->b : s->a, c->pos);
-        if (cc__roll_sweep(dp.x, dp.y, c->vel.x, c->vel.y, k, 0.0, 0.0, 0.0, c->radius, found ? t : t_max, -1, &te, &nx,
-                           &ny) == CC_HIT &&
+        if (cc__roll_sweep(dp.x, dp.y, c->vel.x, c->vel.y, k, 0.0, 0.0, 0.0, c->radius, found ? t : t_max, -1, 0.0, &te,
+                           &nx, &ny) == CC_HIT &&
             (!found || te < t)) {
             found = 1;
             t = te;

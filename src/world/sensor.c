@@ -150,7 +150,7 @@ double cc__sensor_next(const cc_world *w, int i, int j, double sx, double sy)
                 return w->now; /* on the other side by more than rounding (set, pushed): now */
             if (!inside && gap < 0.0)
                 return (bx - ax) * (vbx - vax) + (by - ay) * (vby - vay) < 0.0 ? w->now : HUGE_VAL;
-            if (cc__roll_sweep(bx - ax, by - ay, vax, vay, ka, vbx, vby, kb, R, HUGE_VAL, inside ? 1 : -1, &t, &nx, &ny) !=
+            if (cc__roll_sweep(bx - ax, by - ay, vax, vay, ka, vbx, vby, kb, R, HUGE_VAL, inside ? 1 : -1, 0.0, &t, &nx, &ny) !=
                 CC_HIT)
                 return HUGE_VAL;
             return w->now + t;

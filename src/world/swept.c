@@ -52,7 +52,12 @@ static void cc__pair(cc_world *w, int i, int j, double dt)
                 ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__circles_interact(w, i, j)))
                 return;
             w->stats.pairs_tested++;
-            r = cc__roll_sweep(dp.x, dp.y, bi->vx, bi->vy, P[i].roll, bj->vx, bj->vy, P[j].roll, R, dt, -1, &t, &n.x, &n.y);
+            {
+                double sp = fabs(bi->vx) + fabs(bi->vy) + fabs(bj->vx) + fabs(bj->vy);
+                r = cc__roll_sweep(dp.x, dp.y, bi->vx, bi->vy, P[i].roll, bj->vx, bj->vy, P[j].roll, R, dt, -1,
+                                   2.0 * (0x1p-40 * sp > w->rest_speed * 0x1p-20 ? 0x1p-40 * sp : w->rest_speed * 0x1p-20),
+                                   &t, &n.x, &n.y);
+            }
             if (r == CC_MISS)
                 return;
             cc__roll_motion(P[i].roll, t, &gi, &gdi);

@@ -165,9 +165,12 @@ double cc__roll_coef(double vx, double vy, double decel);
 void cc__roll_motion(double k, double tau, double *g, double *gd);
 /* The earliest t in [0, t_max] at which two rolling circles (b at dp from a, velocities and
  * coefficients at t = 0) come to R apart while approaching (dir = -1: CC_HIT; CC_OVERLAP when
- * closer now) or while separating (dir = +1: CC_HIT). *n: the unit offset a -> b then. */
+ * closer now and closing) or while separating (dir = +1: CC_HIT). *n: the unit offset a -> b
+ * then. A pair closer than R now (by rounding, after an impact) but parting may still come
+ * back as one of them slows: then the contact is when they close at vmin (the caller's least
+ * approach that counts) while still closer than R. */
 int cc__roll_sweep(double dpx, double dpy, double vax, double vay, double ka, double vbx, double vby, double kb,
-                   double R, double t_max, int dir, double *t, double *nx, double *ny);
+                   double R, double t_max, int dir, double vmin, double *t, double *nx, double *ny);
 /* A rolling circle against a wall: as cc_sweep_segment, for the motion of roll.c. */
 int cc__roll_sweep_segment(const cc_circle *c, double k, const cc_segment *s, double t_max, cc_contact *out);
 /* When coordinate x0 moving at v with coefficient k first reaches X (HUGE_VAL: never). */
@@ -280,7 +283,7 @@ static inline int cc__cells_around(const cc_world *w, int32_t cx, int32_t cy, in
         }
     return n;
 }
-/* Coordinate x wrapped into [0, period) along a periodic axis k, exactly (fmod is exact); the
+/* Coordinate x wrapped into [0, period) along a periodic axis k, exactly (as fmod would); the
  * number of periods taken off goes to *turns. */
 double cc__wrap_coord(const cc_world *w, double x, int k, int32_t *turns);
 /* Grid cell size for the current circles (>= largest movable diameter). */

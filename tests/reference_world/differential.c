@@ -135,6 +135,7 @@ typedef struct dw_scene {
     double L, T, J;      /* scales: length, time, impulse */
     double period[2];    /* a periodic scene: its periods (0: open) */
     int props;           /* the scene sets per-body properties */
+    double decel;        /* a rolling scene: its typical deceleration (0: none) */
     cc_segment seg[64];
     int n_seg;
 } dw_scene;
@@ -192,8 +193,14 @@ static cc_circle random_circle(dw_scene *sc)
     speed = u < 0.15 ? 0.0 : rng_log(&sc->rng, sc->vmax * 1e-4, sc->vmax);
     c.vel.x = speed * cos(angle);
     c.vel.y = speed * sin(angle);
-    if (rng_unit(&sc->rng) < 0.08)
+    if (rng_unit(&sc->rng) < 0.08) {
         c.mass = HUGE_VAL; /* an obstacle, or (when moving) a kinematic body */
+        /* a rolling scene has no kinematic pushers: a circle pushed by one is a ball bouncing on
+         * a floor (ever faster impacts, inelastic collapse: CC_EVENT_LIMIT), which 1.1 does not
+         * model (docs/TESTING.md) */
+        if (sc->decel > 0.0)
+            c.vel.x = c.vel.y = 0.0;
+    }
     return c;
 }
 
@@ -280,7 +287,7 @@ static int doubtful(const dw_sim *ref)
 {
     const rw_doubt *d = &ref->r->doubt;
     return d->tie_gap <= DW_TIE || d->graze_gap <= DW_GRAZE || d->slow <= DW_SLOW || d->slack <= DW_SLACK ||
-           d->chain;
+           d->chain || d->push;
 }
 
 /* The largest difference between two snapshots (the same ids in both): positions / L and
@@ -515,7 +522,7 @@ static cc_circle_props random_props(dw_scene *sc)
     cc_circle_props p;
     p.struct_size = sizeof p;
     p.restitution = rng_unit(&sc->rng) < 0.5 ? 1.0 : rng_range(&sc->rng, 0.3, 1.0);
-    p.rolling_decel = 0.0;
+    p.rolling_decel = sc->decel;
     p.category = 1u << rng_int(&sc->rng, 3);
     p.mask = rng_unit(&sc->rng) < 0.6 ? 0xFFFFFFFFu : ~(1u << rng_int(&sc->rng, 3));
     p.sensor = rng_unit(&sc->rng) < 0.1;
@@ -589,6 +596,10 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
     def.restitution = rng_unit(&sc.rng) < 0.5 ? 1.0 : rng_range(&sc.rng, 0.3, 1.0);
     def.rest_speed = rng_unit(&sc.rng) < 0.3 ? sc.vmax * 1e-3 : 0.0;
     sc.props = rng_unit(&sc.rng) < 0.5;
+    /* a third of the scenes roll to rest: a circle at the largest speed stops after 0.05 to 2 of
+     * the box's widths */
+    sc.decel = rng_unit(&sc.rng) < 0.33 ? sc.vmax * sc.vmax / (2.0 * sc.L * rng_log(&sc.rng, 0.05, 2.0)) : 0.0;
+    def.rolling_decel = sc.decel;
     def.restitution_mix = sc.props ? rng_int(&sc.rng, 4) : CC_MIX_MIN;
     if (rng_unit(&sc.rng) < 0.25) { /* a periodic box: a channel along x (walls along y), or a torus */
         int channel = rng_unit(&sc.rng) < 0.5;
@@ -711,7 +722,12 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
                 break;
             }
             for (s = 1; s < n_sims; s++)
-                if (rc[s] != rc[0]) {
+                if (rc[s] != rc[0] && (ref->r->doubt.push || (sc.decel > 0.0 && rc[0] == CC_EVENT_LIMIT))) {
+                    /* a pushing pair's impacts without end (a ball bouncing on a floor: 1.1 has no
+                     * carried contacts), in the world and not in the reference, where rounding
+                     * decided otherwise (docs/TESTING.md) */
+                    out->end = DW_END_JAMMED;
+                } else if (rc[s] != rc[0]) {
                     say(out, "%s: %s returned %d, %s %d", what, sims[0].name, rc[0], sims[s].name, rc[s]);
                     out->end = DW_END_FAILED;
                 }

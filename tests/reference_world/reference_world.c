@@ -3,6 +3,7 @@
 #include "reference_world.h"
 
 #include "world/cluster.h"
+#include "world/world_internal.h" /* the world's rolling solver (roll.c), until the pair API has one */
 
 #include <math.h>
 #include <string.h>
@@ -146,6 +147,7 @@ static void new_call(rw_world *w)
 {
     w->doubt.tie_gap = w->doubt.graze_gap = w->doubt.slow = w->doubt.slack = HUGE_VAL;
     w->doubt.chain = 0;
+    w->doubt.push = 0;
 }
 
 /* "Collapse": approaches slower than rest_speed get restitution 0. */
@@ -169,6 +171,15 @@ static double contact_restitution(const rw_world *w, int a, int b, int seg)
 static double restitution_for(const rw_world *w, double approach, int a, int b, int seg)
 {
     return approach < w->rest_speed ? 0.0 : contact_restitution(w, a, b, seg);
+}
+
+/* "Rolling to rest": circle id's coefficient from its velocity and deceleration now (an
+ * immovable circle never decelerates). */
+static void reroll(rw_world *w, int id)
+{
+    const cc_circle *c = &w->body[id].c;
+    double d = w->body[id].props.rolling_decel, s = sqrt(c->vel.x * c->vel.x + c->vel.y * c->vel.y);
+    w->body[id].roll = isinf(c->mass) || !(d > 0.0) || s == 0.0 ? 0.0 : d / (2.0 * s);
 }
 
 /* "Filters" and "Sensors": pairs that interact (impulses, push-apart, clusters). */
@@ -266,6 +277,8 @@ static int resolve_pair(rw_world *w, int a, int b, int seg)
                isinf(ca->mass) ? cb->mass * speed_change(nb.vel, cb->vel) : ca->mass * speed_change(na.vel, ca->vel));
         ca->vel = na.vel;
         w->body[b].c.vel = nb.vel;
+        reroll(w, a);
+        reroll(w, b);
         return 1;
     }
     k = wall_contact(ca, &w->seg[seg]);
@@ -274,6 +287,7 @@ static int resolve_pair(rw_world *w, int a, int b, int seg)
         return 0;
     report(w, a, -1, seg, k.point, k.normal, ca->mass * speed_change(na.vel, ca->vel));
     ca->vel = na.vel;
+    reroll(w, a);
     return 1;
 }
 
@@ -405,8 +419,10 @@ static int resolve_cluster(rw_world *w, int a, int b, int seg)
         cc__cluster_resolve(c.body, c.nb, c.contact, c.nc, clu_restitution(w, &c), w->rest_speed, scratch,
                             sizeof scratch, NULL) != CC_OK)
         return -1000; /* cannot happen for a valid cluster: the comparison will show it */
-    for (i = 0; i < c.nb; i++)
+    for (i = 0; i < c.nb; i++) {
         w->body[c.id[i]].c.vel = c.body[i].vel;
+        reroll(w, c.id[i]);
+    }
     for (i = 0; i < c.nc; i++) {
         const cc__cluster_contact *k = &c.contact[i];
         const cc_circle *ka = &w->body[c.id[k->a]].c;
@@ -588,6 +604,7 @@ int rw_add_circle(rw_world *w, const cc_circle *c)
     w->body[id].props.category = 1u;
     w->body[id].props.mask = 0xFFFFFFFFu;
     w->body[id].props.sensor = 0;
+    reroll(w, id);
     defer_if_wide(w, c);
     wrap_all(w);
     if (!w->dirty) {
@@ -623,6 +640,7 @@ int rw_set_circle(rw_world *w, int id, const cc_circle *c)
     if (id < 0 || id >= w->id_end || !w->body[id].alive)
         return CC_ERR_NOT_FOUND;
     w->body[id].c = *c;
+    reroll(w, id);
     defer_if_wide(w, c);
     wrap_all(w);
     if (!w->dirty) {
@@ -692,6 +710,7 @@ int rw_set_circle_props(rw_world *w, int id, const cc_circle_props *p)
         }
     q->restitution = p->restitution;
     q->rolling_decel = p->rolling_decel;
+    reroll(w, id);
     q->category = p->category;
     q->mask = p->mask;
     q->sensor = p->sensor != 0;
@@ -727,8 +746,23 @@ static void advance_all(rw_world *w, double t)
     for (i = 0; i < w->id_end; i++)
         if (w->body[i].alive && t != w->now) {
             cc_circle *c = &w->body[i].c;
-            c->pos.x += c->vel.x * (t - w->now);
-            c->pos.y += c->vel.y * (t - w->now);
+            double k = w->body[i].roll, tau = t - w->now, ts = k > 0.0 ? 0.5 / k : HUGE_VAL;
+            if (k == 0.0) {
+                c->pos.x += c->vel.x * tau;
+                c->pos.y += c->vel.y * tau;
+            } else if (tau >= ts) { /* "Rolling to rest": p + v ts / 2, at rest */
+                c->pos.x += c->vel.x * (0.5 * ts);
+                c->pos.y += c->vel.y * (0.5 * ts);
+                c->vel.x = c->vel.y = 0.0;
+                w->body[i].roll = 0.0;
+            } else { /* p + v tau (1 - k tau), velocity v (1 - 2 k tau) */
+                double g = tau * (1.0 - k * tau), gd = 1.0 - 2.0 * k * tau;
+                c->pos.x += c->vel.x * g;
+                c->pos.y += c->vel.y * g;
+                c->vel.x *= gd;
+                c->vel.y *= gd;
+                w->body[i].roll = k / gd;
+            }
         }
     w->now = t;
     wrap_all(w);
@@ -761,6 +795,18 @@ static double sensor_next(const rw_world *w, int s, int v, cc_vec2 shift)
     cc_vec2 nearest = near_image(w, a->pos, bp);
     if (w->inside[s][v] && (nearest.x != bp.x || nearest.y != bp.y))
         return HUGE_VAL; /* inside through its nearest image: this one ends nothing */
+    if (w->body[s].roll > 0.0 || w->body[v].roll > 0.0) { /* "Rolling to rest" */
+        double t, nx, ny;
+        int inside = w->inside[s][v];
+        if (inside ? d - R > tol : d - R < -tol)
+            return w->now;
+        if (!inside && d < R)
+            return bb < 0.0 ? w->now : HUGE_VAL;
+        if (cc__roll_sweep(dp.x, dp.y, a->vel.x, a->vel.y, w->body[s].roll, b->vel.x, b->vel.y, w->body[v].roll, R,
+                           HUGE_VAL, inside ? 1 : -1, 0.0, &t, &nx, &ny) != CC_HIT)
+            return HUGE_VAL;
+        return w->now + t;
+    }
     if (w->inside[s][v]) {
         double h, q, disc, c, t;
         if (d - R > tol)
@@ -787,6 +833,47 @@ static double sensor_next(const rw_world *w, int s, int v, cc_vec2 shift)
         default: return HUGE_VAL;
         }
     }
+}
+
+/* "Rolling to rest": a wall against a circle that may decelerate. */
+static int wall_sweep(const rw_world *w, int i, const cc_circle *c, const cc_segment *g, double h, cc_contact *k)
+{
+    return w->body[i].roll > 0.0 ? cc__roll_sweep_segment(c, w->body[i].roll, g, h, k) : cc_sweep_segment(c, g, h, k);
+}
+
+/* "Rolling to rest": pair i, j (the image cj of j) of which one rolls; hits and misses within
+ * 1e-6 of the radius sum are rounding's (a ball stopping just short of another is such a graze). */
+static void roll_pair(rw_world *w, int i, int j, const cc_circle *cj, double h, rw_cand *best, double *second)
+{
+    const cc_circle *ci = &w->body[i].c;
+    double ki = w->body[i].roll, kj = w->body[j].roll, R = ci->radius + cj->radius, t, nx, ny, gi, gdi, gj, gdj;
+    double vn, speeds, tt, a, b;
+    cc_vec2 dp = sub(cj->pos, ci->pos);
+    double vmin = 2.0 * approach_threshold(w, l1(ci->vel) + l1(cj->vel));
+    int r;
+    {
+        double len = sqrt(dp.x * dp.x + dp.y * dp.y);
+        if (len > 0.0 && fabs(len - R) <= 1e-6 * R &&
+            fabs((cj->vel.x - ci->vel.x) * dp.x + (cj->vel.y - ci->vel.y) * dp.y) <= 1e-6 * len * (l1(ci->vel) + l1(cj->vel)))
+            w->doubt.push = 1;
+    }
+    r = cc__roll_sweep(dp.x, dp.y, ci->vel.x, ci->vel.y, ki, cj->vel.x, cj->vel.y, kj, R, h, -1, vmin, &t, &nx, &ny);
+    int ri = cc__roll_sweep(dp.x, dp.y, ci->vel.x, ci->vel.y, ki, cj->vel.x, cj->vel.y, kj, R * (1.0 - 1e-6), h, -1, vmin,
+                            &tt, &a, &b);
+    int ro = cc__roll_sweep(dp.x, dp.y, ci->vel.x, ci->vel.y, ki, cj->vel.x, cj->vel.y, kj, R * (1.0 + 1e-6), h, -1, vmin,
+                            &tt, &a, &b);
+    if (ri != ro)
+        w->doubt.graze_gap = 0.0;
+    if (r == CC_MISS)
+        return;
+    cc__roll_motion(ki, t, &gi, &gdi);
+    cc__roll_motion(kj, t, &gj, &gdj);
+    vn = -((cj->vel.x * gdj - ci->vel.x * gdi) * nx + (cj->vel.y * gdj - ci->vel.y * gdi) * ny);
+    speeds = l1(ci->vel) * gdi + l1(cj->vel) * gdj;
+    if (vn > 0.0 && fabs(vn / approach_threshold(w, speeds) - 1.0) < w->doubt.slow)
+        w->doubt.slow = fabs(vn / approach_threshold(w, speeds) - 1.0);
+    if (approaching(w, vn, speeds))
+        offer(best, second, w->now + t, i, j, -1, 0);
 }
 
 /* Every pair swept from now: the earliest event up to t_end, with its doubts. */
@@ -829,6 +916,10 @@ static rw_cand next_event(rw_world *w, double t_end)
             }
             if ((isinf(ci->mass) && isinf(cj->mass)) || !interact(w, i, j))
                 continue;
+            if (w->body[i].roll > 0.0 || w->body[j].roll > 0.0) {
+                roll_pair(w, i, j, cj, h, &best, &second);
+                continue;
+            }
             dp = sub(cj->pos, ci->pos);
             dv = sub(cj->vel, ci->vel);
             vv = dot(dv, dv);
@@ -866,18 +957,32 @@ static rw_cand next_event(rw_world *w, double t_end)
             if (fmax(g->a.x, g->b.x) < fmin(ci->pos.x, ex) - m || fmin(g->a.x, g->b.x) > fmax(ci->pos.x, ex) + m ||
                 fmax(g->a.y, g->b.y) < fmin(ci->pos.y, ey) - m || fmin(g->a.y, g->b.y) > fmax(ci->pos.y, ey) + m)
                 continue;
-            r = cc_sweep_segment(ci, g, h, &k);
+            r = wall_sweep(w, i, ci, g, h, &k);
             {   /* the wall passed within 1e-6 of the radius: hit or miss is rounding's */
                 cc_circle in = *ci, out = *ci;
                 cc_contact kk;
+                int ri, ro;
                 in.radius *= 1.0 - 1e-6;
                 out.radius *= 1.0 + 1e-6;
-                int ri = cc_sweep_segment(&in, g, h, &kk), ro = cc_sweep_segment(&out, g, h, &kk);
+                ri = wall_sweep(w, i, &in, g, h, &kk);
+                ro = wall_sweep(w, i, &out, g, h, &kk);
                 if ((ri == CC_HIT && ro == CC_MISS) || (ri == CC_MISS && ro == CC_HIT))
                     w->doubt.graze_gap = 0.0;
             }
             if (r != CC_HIT && r != CC_OVERLAP)
                 continue;
+            {   /* the velocity at contact: a rolling circle slows */
+                double gg, gd;
+                cc__roll_motion(w->body[i].roll, k.t, &gg, &gd);
+                vn = gd * dot(ci->vel, k.normal);
+                if (!(vn > 0.0 && approaching(w, vn, gd * l1(ci->vel)))) {
+                    if (vn > 0.0 && fabs(vn / approach_threshold(w, gd * l1(ci->vel)) - 1.0) < w->doubt.slow)
+                        w->doubt.slow = fabs(vn / approach_threshold(w, gd * l1(ci->vel)) - 1.0);
+                    continue;
+                }
+                offer(&best, &second, w->now + k.t, i, -1, s, 0);
+                continue;
+            }
             vn = dot(ci->vel, k.normal);
             thr = approach_threshold(w, l1(ci->vel));
             if (vn > 0.0 && fabs(vn / thr - 1.0) < w->doubt.slow)

@@ -27,6 +27,7 @@ typedef struct rw_body {
     cc_circle c;          /* state at the world's current time */
     int alive;
     cc_circle_props props; /* "Per-body properties" (sensor: 0 or 1) */
+    double roll;           /* "Rolling to rest": decel / (2 |v|) now, 0 at rest or without decel */
 } rw_body;
 
 /* What rounding decides in a call (add, set, remove, step): the smallest of each, over every
@@ -40,6 +41,10 @@ typedef struct rw_doubt {
     double slack;     /* |normal speed| / summed speeds of a contact in a cluster: near 0,
                          whether it takes an impulse is rounding's (+INF) */
     int chain;        /* a push-apart made a new overlap: the order of the pushes decides (0/1) */
+    int push;         /* a rolling pair touches (within 1e-6 of R) with a normal speed below 1e-6 of
+                         their speeds: one pushes the other, which decelerates more along the
+                         normal; its impacts come ever closer (a ball bouncing on a floor), and
+                         rounding decides when the next one is (0/1) */
 } rw_doubt;
 
 typedef void (*rw_event_fn)(const cc_contact_event *e, void *user);
