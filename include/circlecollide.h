@@ -350,8 +350,19 @@ typedef struct cc_world_def {
                                  (0, 0)); see "Periodic boxes" */
 } cc_world_def;
 
-/* Defaults for every field; sets struct_size = sizeof(cc_world_def). Does nothing for NULL. */
-CC_API void cc_world_def_init(cc_world_def *def);
+/* Defaults for every field that fits in struct_size bytes (whole fields; the bytes of fields
+ * this library does not know are zeroed), and sets def->struct_size = struct_size; does nothing
+ * for NULL or a struct_size below 1.0's def. What cc_world_def_init calls; bindings over an FFI
+ * call it with the size of their own def. (1.1) */
+CC_API void cc_world_def_init_sized(cc_world_def *def, size_t struct_size);
+
+/* Defaults for every field; sets struct_size = sizeof(cc_world_def). Does nothing for NULL.
+ * A macro over cc_world_def_init_sized with the size of the def this header declares (zlib's
+ * handshake): the exported function of this name, which a program built against 1.0 calls,
+ * cannot know the caller's size, so it fills 1.0's def only (its size in struct_size, the 1.1
+ * fields taking their defaults in the world). Taken by address, it is that 1.0 function. */
+CC_API void(cc_world_def_init)(cc_world_def *def);
+#define cc_world_def_init(def) cc_world_def_init_sized((def), sizeof(cc_world_def))
 
 /* Bytes of memory cc_world_init needs for def (its capacities), or 0 when def is invalid or
  * its struct_size is too small. The memory must be aligned to 8 bytes (as malloc's memory and a

@@ -14,10 +14,12 @@
 /* The def's fields up to and including restitution: what every caller must send. */
 #define CC__DEF_MIN (offsetof(cc_world_def, restitution) + sizeof(double))
 
-CC_API void cc_world_def_init(cc_world_def *def)
+/* The def of 1.0: its fields end at user. */
+#define CC__DEF_1_0 (offsetof(cc_world_def, user) + sizeof(void *))
+
+/* Every default into a whole def of this library's size. */
+static void cc__def_defaults(cc_world_def *def)
 {
-    if (def == NULL)
-        return;
     memset(def, 0, sizeof *def);
     def->struct_size = sizeof *def;
     def->max_circles = 64;
@@ -34,6 +36,37 @@ CC_API void cc_world_def_init(cc_world_def *def)
     def->on_sensor = NULL;
     def->period.x = 0.0;
     def->period.y = 0.0;
+}
+
+static const size_t cc__def_ends[] = {
+    offsetof(cc_world_def, struct_size) + sizeof(size_t), offsetof(cc_world_def, max_circles) + sizeof(int),
+    offsetof(cc_world_def, max_segments) + sizeof(int), offsetof(cc_world_def, mode) + sizeof(int),
+    offsetof(cc_world_def, restitution) + sizeof(double), offsetof(cc_world_def, rest_speed) + sizeof(double),
+    offsetof(cc_world_def, cell_size) + sizeof(double), offsetof(cc_world_def, max_events) + sizeof(uint64_t),
+    offsetof(cc_world_def, on_contact) + sizeof(cc_contact_fn), CC__DEF_1_0,
+    offsetof(cc_world_def, rolling_decel) + sizeof(double), offsetof(cc_world_def, restitution_mix) + sizeof(int),
+    offsetof(cc_world_def, on_sensor) + sizeof(cc_sensor_fn), offsetof(cc_world_def, period) + sizeof(cc_vec2)};
+
+CC_API void cc_world_def_init_sized(cc_world_def *def, size_t struct_size)
+{
+    cc_world_def d;
+    if (def == NULL || struct_size < CC__DEF_1_0)
+        return;
+    cc__def_defaults(&d);
+    /* a def larger than this library's (a newer header): its unknown tail zeroed */
+    if (struct_size > sizeof d)
+        memset((unsigned char *)def + sizeof d, 0, struct_size - sizeof d);
+    else
+        memset(def, 0, struct_size);
+    memcpy(def, &d, cc__whole_fields(struct_size, cc__def_ends, (int)(sizeof cc__def_ends / sizeof cc__def_ends[0])));
+    def->struct_size = struct_size;
+}
+
+/* The function a program built against 1.0 calls (the header's macro of this name calls
+ * cc_world_def_init_sized): 1.0's def, no more. */
+CC_API void(cc_world_def_init)(cc_world_def *def)
+{
+    cc_world_def_init_sized(def, CC__DEF_1_0);
 }
 
 size_t cc__whole_fields(size_t n, const size_t *ends, int count)
@@ -289,6 +322,8 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
     k->flags = CC__ALIVE;
     if (w->features & CC__F_ROLL)
         cc__roll_reset(w, id);
+    else
+        p->roll = 0.0; /* (read once friction comes: it starts with the state written now) */
     if (w->mode != CC_MODE_EXACT)
         return; /* the other modes rebuild their grid every step */
     /* wider than the cells allow: the cell size grows, everything is refiled at the next step */
