@@ -74,9 +74,7 @@ class World:
     ) -> None:
         if mode not in MODES:
             raise ValueError(f"mode must be one of {sorted(MODES)}, got {mode!r}")
-        d = _lib.cc_world_def()
-        L.cc_world_def_init(byref(d))
-        d.struct_size = ctypes.sizeof(d)
+        d, self._lib_def_size = _lib.world_def_defaults()
         d.max_circles = _c_int(max_circles, "max_circles")
         d.max_segments = _c_int(max_segments, "max_segments")
         d.mode = MODES[mode]
