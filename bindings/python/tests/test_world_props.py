@@ -164,3 +164,16 @@ def test_world_arguments_are_checked():
         World(max_circles=1, rolling_decel=-1.0)
     with pytest.raises(ValueError, match="period"):
         World(max_circles=1, period=5.0)
+
+
+def test_a_library_with_a_shorter_def_refuses_the_settings_it_cannot_read(monkeypatch):
+    # as if the library were 1.0: its cc_world_def_init reports the 1.0 size (up to `user`);
+    # a 1.1 setting would be silently ignored there, so the binding refuses it
+    from circlecollide import _lib
+
+    real = _lib.world_def_defaults
+    monkeypatch.setattr(_lib, "world_def_defaults", lambda: (real()[0], _lib.field_end(_lib.cc_world_def, "user")))
+    World(max_circles=2)  # nothing of 1.1 asked: fine
+    for kw in ({"rolling_decel": 1.0}, {"restitution_mix": "max"}, {"on_sensor": print}, {"period": (10, 0)}):
+        with pytest.raises(NotImplementedError, match="cc_world_def"):
+            World(max_circles=2, **kw)

@@ -69,9 +69,17 @@ def test_making_an_overlapping_circle_a_sensor_begins_at_once_and_removal_ends_n
     w.set_circle_props(a, sensor=True)  # b at distance 3 is not inside; a new one is
     d = w.add_circle(Circle((0, 1.5), (0, 0), 0.5))  # distance 1.5 < 2.5 from a: begin at once
     assert [(e.sensor, e.visitor, e.begin, e.t) for e in events] == [(a, d, True, 0.0)]
+    # a stops being a sensor: d's end comes from inside set_circle_props, and the pair, now two
+    # ordinary overlapping circles, is pushed apart (a immovable: d to distance 2.5, at y = 2.5)
+    w.set_circle_props(a, sensor=False)
+    assert [(e.sensor, e.visitor, e.begin) for e in events[1:]] == [(a, d, False)]
+    assert w.circle(d).pos == pytest.approx((0.0, 2.5))
+    w.set_circle_props(a, sensor=True)  # touching is not overlapping: no begin
+    w.set_circle(d, Circle((0, 2), (0, 0), 0.5))  # set inside it: begin at once
+    assert [(e.sensor, e.visitor, e.begin) for e in events[2:]] == [(a, d, True)]
     w.remove_circle(d)  # a removed circle gets no end
     w.step(1.0)
-    assert len(events) == 1
+    assert len(events) == 3
 
 
 def test_an_exception_in_on_sensor_is_raised_by_the_call_that_fired_it():

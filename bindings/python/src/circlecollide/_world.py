@@ -167,11 +167,14 @@ class World:
         d.period = _lib.cc_vec2(px, py)
         # a library older than these declarations ignores the fields beyond its def: refuse to
         # drop a setting silently
-        for name, default in (("rolling_decel", 0.0), ("restitution_mix", 0), ("on_sensor", None), ("period", None)):
-            asked = {"on_sensor": on_sensor is not None, "period": (px, py) != (0.0, 0.0)}.get(
-                name, getattr(d, name) != default
-            )
-            if asked and self._lib_def_size < _lib.field_end(_lib.cc_world_def, name):
+        asked = {
+            "rolling_decel": d.rolling_decel != 0.0,
+            "restitution_mix": d.restitution_mix != _lib.MIX_MIN,
+            "on_sensor": on_sensor is not None,
+            "period": (px, py) != (0.0, 0.0),
+        }
+        for name, wanted in asked.items():
+            if wanted and self._lib_def_size < _lib.field_end(_lib.cc_world_def, name):
                 raise NotImplementedError(f"circlecollide: the C library loaded has no cc_world_def.{name}")
         self._on_contact = on_contact
         self._on_sensor = on_sensor
