@@ -32,9 +32,9 @@ from ._pair import (
     sweep_segment,
 )
 from ._batch import sweep_many
-from ._world import ContactEvent, World, WorldStats
+from ._world import CastHit, CircleProps, ContactEvent, SegmentProps, SensorEvent, World, WorldStats
 
-__version__ = "1.0.0"
+__version__ = "1.1.0"
 
 
 def library_version() -> str:
@@ -48,12 +48,16 @@ def library_path() -> str:
 
 
 __all__ = [
+    "CastHit",
     "Circle",
+    "CircleProps",
     "CircleCollideError",
     "Contact",
     "ContactEvent",
     "EXPECTED_MAJOR",
     "LibraryVersionError",
+    "SegmentProps",
+    "SensorEvent",
     "Vec2",
     "World",
     "WorldStats",

@@ -89,6 +89,22 @@ class cc_contact_event(ctypes.Structure):
 cc_contact_fn = ctypes.CFUNCTYPE(None, ctypes.POINTER(cc_contact_event), ctypes.c_void_p)
 
 
+class cc_sensor_event(ctypes.Structure):
+    _fields_ = [("sensor", c_int), ("visitor", c_int), ("begin", c_int), ("t", c_double)]
+
+
+cc_sensor_fn = ctypes.CFUNCTYPE(None, ctypes.POINTER(cc_sensor_event), ctypes.c_void_p)
+
+# restitution_mix values (CC_MIX_*)
+MIX_MIN = 0
+MIX_MAX = 1
+MIX_PRODUCT = 2
+MIX_MEAN = 3
+
+#: CC_MAX_SENSORS: sensors a world holds at once
+MAX_SENSORS = 64
+
+
 class cc_world_def(ctypes.Structure):
     _fields_ = [
         ("struct_size", ctypes.c_size_t),
@@ -101,6 +117,11 @@ class cc_world_def(ctypes.Structure):
         ("max_events", ctypes.c_uint64),
         ("on_contact", cc_contact_fn),
         ("user", ctypes.c_void_p),
+        # 1.1
+        ("rolling_decel", c_double),
+        ("restitution_mix", c_int),
+        ("on_sensor", cc_sensor_fn),
+        ("period", cc_vec2),
     ]
 
 
@@ -113,6 +134,39 @@ class cc_world_stats(ctypes.Structure):
         ("pairs_tested", ctypes.c_uint64),
         ("cell_crossings", ctypes.c_uint64),
         ("max_overlap", c_double),
+        # 1.1
+        ("virial", c_double),
+        ("wall_impulse", c_double),
+    ]
+
+
+class cc_circle_props(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_size_t),
+        ("restitution", c_double),
+        ("rolling_decel", c_double),
+        ("category", ctypes.c_uint32),
+        ("mask", ctypes.c_uint32),
+        ("sensor", c_int),
+    ]
+
+
+class cc_segment_props(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_size_t),
+        ("restitution", c_double),
+        ("category", ctypes.c_uint32),
+        ("mask", ctypes.c_uint32),
+    ]
+
+
+class cc_cast_hit(ctypes.Structure):
+    _fields_ = [
+        ("circle", c_int),
+        ("segment", c_int),
+        ("t", c_double),
+        ("point", cc_vec2),
+        ("normal", cc_vec2),
     ]
 
 
@@ -155,6 +209,16 @@ PROTOTYPES: dict[str, tuple[Any, list[Any]]] = {
     "cc_world_get_segment": (c_int, [_vp, c_int, P(cc_segment)]),
     "cc_world_time": (c_double, [_vp]),
     "cc_world_get_stats": (c_int, [_vp, P(cc_world_stats)]),
+    # 1.1
+    "cc_world_get_unwrapped": (c_int, [_vp, c_int, P(cc_vec2)]),
+    "cc_world_get_circle_props": (c_int, [_vp, c_int, P(cc_circle_props)]),
+    "cc_world_set_circle_props": (c_int, [_vp, c_int, P(cc_circle_props)]),
+    "cc_world_get_segment_props": (c_int, [_vp, c_int, P(cc_segment_props)]),
+    "cc_world_set_segment_props": (c_int, [_vp, c_int, P(cc_segment_props)]),
+    "cc_world_cast_circle": (c_int, [_vp, cc_vec2, c_double, cc_vec2, ctypes.c_uint32, P(cc_cast_hit)]),
+    "cc_world_query_circle": (c_int, [_vp, cc_vec2, c_double, ctypes.c_uint32, P(c_int), c_int]),
+    "cc_world_query_box": (c_int, [_vp, cc_vec2, cc_vec2, ctypes.c_uint32, P(c_int), c_int]),
+    "cc_world_hash": (ctypes.c_uint64, [_vp]),
 }
 
 #: Functions a library of our major version may lack while the world is being built; calling a
@@ -241,6 +305,29 @@ def load(path: Optional[str] = None, expected_major: int = EXPECTED_MAJOR) -> An
 
 
 lib = load()
+
+
+def world_def_defaults() -> "tuple[cc_world_def, int]":
+    """cc_world_def_init's defaults in our cc_world_def, and the struct_size the library wrote.
+
+    cc_world_def_init writes sizeof(cc_world_def) as the *library* was compiled: a library newer
+    than these declarations writes past the end of our struct (1.0 declarations under a 1.1
+    library did, and crashed). So it writes into a buffer with room to spare, and only our fields
+    are kept. The size it reports tells which fields that library knows (an older library leaves
+    the rest zero, which are their defaults).
+    """
+    room = (ctypes.c_uint64 * ((ctypes.sizeof(cc_world_def) + 4096) // 8))()
+    lib.cc_world_def_init(ctypes.cast(room, ctypes.POINTER(cc_world_def)))
+    d = cc_world_def.from_buffer_copy(room)
+    lib_size = int(d.struct_size)
+    d.struct_size = ctypes.sizeof(cc_world_def)
+    return d, lib_size
+
+
+def field_end(struct: Any, name: str) -> int:
+    """Offset of the byte after field name: the struct_size a library needs to read it."""
+    f = getattr(struct, name)
+    return int(f.offset + f.size)
 
 
 def result_string(code: int) -> str:

@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 import ctypes
+import dataclasses
 from dataclasses import dataclass
-from typing import Any, Callable, Iterable, List, Optional
+from typing import Any, Callable, Iterable, List, Literal, Optional
 
 import numpy as np
 
@@ -16,6 +17,9 @@ L = _lib.lib
 byref = ctypes.byref
 
 MODES = {"exact": 0, "swept": 1, "discrete": 2}
+#: restitution_mix: how a contact's restitution is made from its two sides' (CC_MIX_*)
+MIXES = {"min": _lib.MIX_MIN, "max": _lib.MIX_MAX, "product": _lib.MIX_PRODUCT, "mean": _lib.MIX_MEAN}
+ALL_BITS = 0xFFFFFFFF
 
 
 @dataclass(frozen=True)
@@ -36,8 +40,24 @@ class ContactEvent:
 
 
 @dataclass(frozen=True)
+class SensorEvent:
+    """A circle ``visitor`` began (``begin`` True) or stopped (False) overlapping the sensor
+    circle ``sensor`` at world time ``t``."""
+
+    sensor: int
+    visitor: int
+    begin: bool
+    t: float
+
+
+@dataclass(frozen=True)
 class WorldStats:
-    """Counters since the world was made (cc_world_stats)."""
+    """Counters since the world was made (cc_world_stats).
+
+    ``virial``: the sum over circle-circle impulses of impulse times the distance between the
+    centres at contact (in a periodic box, P A = N kT + virial / (2 t)); ``wall_impulse``: the
+    sum of the impulses on walls.
+    """
 
     collisions: int
     events: int
@@ -45,19 +65,69 @@ class WorldStats:
     pairs_tested: int
     cell_crossings: int
     max_overlap: float
+    virial: float = 0.0
+    wall_impulse: float = 0.0
+
+
+@dataclass(frozen=True)
+class CircleProps:
+    """A circle's properties (cc_circle_props): its ``restitution`` in [0, 1], its own
+    ``rolling_decel`` (>= 0), the filter bits ``category`` (what it is) and ``mask`` (what it
+    interacts with), and whether it is a ``sensor``."""
+
+    restitution: float = 1.0
+    rolling_decel: float = 0.0
+    category: int = 1
+    mask: int = ALL_BITS
+    sensor: bool = False
+
+
+@dataclass(frozen=True)
+class SegmentProps:
+    """A wall's properties (cc_segment_props): ``restitution``, ``category``, ``mask``."""
+
+    restitution: float = 1.0
+    category: int = 1
+    mask: int = ALL_BITS
+
+
+@dataclass(frozen=True)
+class CastHit:
+    """What a cast circle touched first (cc_cast_hit).
+
+    ``kind`` is ``"hit"`` (touched at fraction ``t`` of the path: the centre is at p + d t) or
+    ``"overlap"`` (it already overlaps at p, t = 0). ``circle`` is the circle's id or -1,
+    ``segment`` the wall's id or -1; ``normal`` points from the cast circle towards it.
+    """
+
+    kind: Literal["hit", "overlap"]
+    circle: int
+    segment: int
+    t: float
+    point: Vec2
+    normal: Vec2
 
 
 ContactCallback = Callable[[ContactEvent], None]
+SensorCallback = Callable[[SensorEvent], None]
 
 
 class World:
     """A simulation of up to ``max_circles`` circles and ``max_segments`` static walls.
 
     ``mode`` is ``"exact"`` (every collision in time order), ``"swept"`` or ``"discrete"``;
-    ``restitution`` in [0, 1] applies to every contact. ``on_contact``, if given, is called with a
-    ``ContactEvent`` for every impulse during ``step``; an exception it raises is kept and raised
-    again when ``step`` returns (the C step itself cannot be interrupted; later contacts of that
-    step are not reported). The world's memory is a buffer owned by this object.
+    ``restitution`` in [0, 1] is what new circles and walls get (``set_circle_props`` and
+    ``set_segment_props`` change it per body), and ``restitution_mix`` (``"min"``, ``"max"``,
+    ``"product"`` or ``"mean"``) makes a contact's from its two sides'. ``rolling_decel`` (>= 0)
+    is the deceleration new movable circles get (rolling to rest). ``period=(px, py)``: a
+    component > 0 makes the world wrap along that axis (positions kept in [0, period)).
+
+    ``on_contact``, if given, is called with a ``ContactEvent`` for every impulse, and
+    ``on_sensor`` with a ``SensorEvent`` for every sensor begin and end; an exception either
+    raises is kept and raised again when the call that fired it (``step``, ``add_circle``,
+    ``set_circle``, ``set_circle_props``) returns (the C call itself cannot be interrupted;
+    later events of that call are not reported). The world's memory is a buffer owned by this
+    object.
     """
 
     def __init__(
@@ -71,12 +141,16 @@ class World:
         cell_size: float = 0.0,
         max_events: Optional[int] = None,
         on_contact: Optional[ContactCallback] = None,
+        rolling_decel: float = 0.0,
+        restitution_mix: str = "min",
+        on_sensor: Optional[SensorCallback] = None,
+        period: Iterable[float] = (0.0, 0.0),
     ) -> None:
         if mode not in MODES:
             raise ValueError(f"mode must be one of {sorted(MODES)}, got {mode!r}")
-        d = _lib.cc_world_def()
-        L.cc_world_def_init(byref(d))
-        d.struct_size = ctypes.sizeof(d)
+        if restitution_mix not in MIXES:
+            raise ValueError(f"restitution_mix must be one of {sorted(MIXES)}, got {restitution_mix!r}")
+        d, self._lib_def_size = _lib.world_def_defaults()
         d.max_circles = _c_int(max_circles, "max_circles")
         d.max_segments = _c_int(max_segments, "max_segments")
         d.mode = MODES[mode]
@@ -87,11 +161,31 @@ class World:
             if not 0 < int(max_events) < 2**64:
                 raise ValueError("max_events must be a positive integer")
             d.max_events = int(max_events)
+        d.rolling_decel = float(rolling_decel)
+        d.restitution_mix = MIXES[restitution_mix]
+        px, py = vec2(period, "period")
+        d.period = _lib.cc_vec2(px, py)
+        # a library older than these declarations ignores the fields beyond its def: refuse to
+        # drop a setting silently
+        asked = {
+            "rolling_decel": d.rolling_decel != 0.0,
+            "restitution_mix": d.restitution_mix != _lib.MIX_MIN,
+            "on_sensor": on_sensor is not None,
+            "period": (px, py) != (0.0, 0.0),
+        }
+        for name, wanted in asked.items():
+            if wanted and self._lib_def_size < _lib.field_end(_lib.cc_world_def, name):
+                raise NotImplementedError(f"circlecollide: the C library loaded has no cc_world_def.{name}")
         self._on_contact = on_contact
+        self._on_sensor = on_sensor
         self._error: Optional[BaseException] = None
-        # Kept on self so that ctypes never frees the trampoline while C holds its address.
+        # Kept on self so that ctypes never frees the trampolines while C holds their addresses.
         self._trampoline = _lib.cc_contact_fn(self._dispatch) if on_contact is not None else _lib.cc_contact_fn()
+        self._sensor_trampoline = (
+            _lib.cc_sensor_fn(self._dispatch_sensor) if on_sensor is not None else _lib.cc_sensor_fn()
+        )
         d.on_contact = self._trampoline
+        d.on_sensor = self._sensor_trampoline
         d.user = None
         size = L.cc_world_size(byref(d))
         if size == 0:
@@ -108,6 +202,7 @@ class World:
         self.max_circles = d.max_circles
         self.max_segments = d.max_segments
         self.mode = mode
+        self.period: Vec2 = (px, py)
         self._scratch = (_lib.cc_circle * max(1, self.max_circles))()
         self._ids = (ctypes.c_int * max(1, self.max_circles))()
 
@@ -129,12 +224,31 @@ class World:
         except BaseException as exc:  # noqa: BLE001  (re-raised by step)
             self._error = exc
 
+    def _dispatch_sensor(self, event: Any, user: Any) -> None:  # called from C: must never raise
+        if self._error is not None or self._on_sensor is None:
+            return
+        try:
+            e = event.contents
+            self._on_sensor(SensorEvent(e.sensor, e.visitor, bool(e.begin), e.t))
+        except BaseException as exc:  # noqa: BLE001  (re-raised by the call that fired it)
+            self._error = exc
+
+    def _firing(self, code: int, context: str) -> int:
+        """check() for a call that may fire the callbacks: an exception one of them raised
+        during the call is raised now (after a C error, which comes first)."""
+        err, self._error = self._error, None
+        code = check(code, context)
+        if err is not None:
+            raise err
+        return code
+
     # ---- building the scene -------------------------------------------------------------
 
     def add_circle(self, circle: Circle) -> int:
         """Adds a circle (its state at the current world time); returns its id."""
         c = circle_to_c(circle)
-        return check(L.cc_world_add_circle(self._w, byref(c)), "add_circle")
+        self._error = None
+        return self._firing(L.cc_world_add_circle(self._w, byref(c)), "add_circle")
 
     def add_segment(self, p: Iterable[float], q: Iterable[float]) -> int:
         """Adds a static wall from p to q; returns its id."""
@@ -154,7 +268,8 @@ class World:
     def set_circle(self, id: int, circle: Circle) -> None:
         """Replaces a circle's state at the current world time."""
         c = circle_to_c(circle)
-        check(L.cc_world_set_circle(self._w, _c_int(id, "id"), byref(c)), "set_circle")
+        self._error = None
+        self._firing(L.cc_world_set_circle(self._w, _c_int(id, "id"), byref(c)), "set_circle")
 
     def segment(self, id: int) -> tuple[Vec2, Vec2]:
         """The wall's end points."""
@@ -168,10 +283,7 @@ class World:
         """Advances world time by dt. Returns False when the step stopped at max_events (the
         world is consistent at the last event; call again to continue), True otherwise."""
         self._error = None
-        code = check(L.cc_world_step(self._w, float(dt)), "step")
-        if self._error is not None:
-            err, self._error = self._error, None
-            raise err
+        code = self._firing(L.cc_world_step(self._w, float(dt)), "step")
         return code != _lib.EVENT_LIMIT
 
     @property
@@ -190,13 +302,145 @@ class World:
         self._on_contact = fn
 
     @property
+    def on_sensor(self) -> Optional[SensorCallback]:
+        return self._on_sensor
+
+    @on_sensor.setter
+    def on_sensor(self, fn: Optional[SensorCallback]) -> None:
+        if fn is not None and not self._sensor_trampoline:
+            raise ValueError("give on_sensor when making the World to receive sensor events")
+        self._on_sensor = fn
+
+    @property
     def stats(self) -> WorldStats:
         s = _lib.cc_world_stats()
         s.struct_size = ctypes.sizeof(s)
         check(L.cc_world_get_stats(self._w, byref(s)), "stats")
         return WorldStats(
-            s.collisions, s.events, s.stale_events, s.pairs_tested, s.cell_crossings, s.max_overlap
+            s.collisions,
+            s.events,
+            s.stale_events,
+            s.pairs_tested,
+            s.cell_crossings,
+            s.max_overlap,
+            s.virial,
+            s.wall_impulse,
         )
+
+    # ---- per-body properties ------------------------------------------------------------
+
+    def circle_props(self, id: int) -> CircleProps:
+        """The circle's properties (restitution, rolling_decel, category, mask, sensor)."""
+        p = _lib.cc_circle_props()
+        p.struct_size = ctypes.sizeof(p)
+        check(L.cc_world_get_circle_props(self._w, _c_int(id, "id"), byref(p)), "circle_props")
+        return CircleProps(p.restitution, p.rolling_decel, p.category, p.mask, bool(p.sensor))
+
+    def set_circle_props(self, id: int, props: Optional[CircleProps] = None, **changes: Any) -> CircleProps:
+        """Sets the circle's properties: ``props`` whole, or its current ones with the keyword
+        ``changes`` (``restitution``, ``rolling_decel``, ``category``, ``mask``, ``sensor``).
+        May fire on_contact and on_sensor (an overlap that starts to count). Returns the
+        properties now in force."""
+        base = props if props is not None else self.circle_props(id)
+        if not isinstance(base, CircleProps):
+            raise TypeError(f"expected CircleProps, got {type(base).__name__}")
+        new = dataclasses.replace(base, **changes)
+        p = _lib.cc_circle_props(
+            ctypes.sizeof(_lib.cc_circle_props),
+            float(new.restitution),
+            float(new.rolling_decel),
+            _u32(new.category, "category"),
+            _u32(new.mask, "mask"),
+            1 if new.sensor else 0,
+        )
+        self._error = None
+        self._firing(L.cc_world_set_circle_props(self._w, _c_int(id, "id"), byref(p)), "set_circle_props")
+        return self.circle_props(id)
+
+    def segment_props(self, id: int) -> SegmentProps:
+        """The wall's properties (restitution, category, mask)."""
+        p = _lib.cc_segment_props()
+        p.struct_size = ctypes.sizeof(p)
+        check(L.cc_world_get_segment_props(self._w, _c_int(id, "id"), byref(p)), "segment_props")
+        return SegmentProps(p.restitution, p.category, p.mask)
+
+    def set_segment_props(self, id: int, props: Optional[SegmentProps] = None, **changes: Any) -> SegmentProps:
+        """Sets the wall's properties, as ``set_circle_props``. Returns those now in force."""
+        base = props if props is not None else self.segment_props(id)
+        if not isinstance(base, SegmentProps):
+            raise TypeError(f"expected SegmentProps, got {type(base).__name__}")
+        new = dataclasses.replace(base, **changes)
+        p = _lib.cc_segment_props(
+            ctypes.sizeof(_lib.cc_segment_props),
+            float(new.restitution),
+            _u32(new.category, "category"),
+            _u32(new.mask, "mask"),
+        )
+        check(L.cc_world_set_segment_props(self._w, _c_int(id, "id"), byref(p)), "set_segment_props")
+        return self.segment_props(id)
+
+    # ---- queries and state --------------------------------------------------------------
+
+    def cast_circle(
+        self, p: Iterable[float], d: Iterable[float], radius: float = 0.0, mask: int = ALL_BITS
+    ) -> Optional[CastHit]:
+        """The first circle or wall that a circle of ``radius`` (0: a ray) moving from p to
+        p + d touches, the world held still at its current time; only bodies whose category
+        meets ``mask``, sensors skipped. ``None`` when it touches nothing."""
+        out = _lib.cc_cast_hit()
+        code = check(
+            L.cc_world_cast_circle(
+                self._w,
+                _lib.cc_vec2(*vec2(p, "p")),
+                float(radius),
+                _lib.cc_vec2(*vec2(d, "d")),
+                _u32(mask, "mask"),
+                byref(out),
+            ),
+            "cast_circle",
+        )
+        if code == _lib.MISS:
+            return None
+        return CastHit(
+            "hit" if code == _lib.HIT else "overlap",
+            out.circle,
+            out.segment,
+            out.t,
+            (out.point.x, out.point.y),
+            (out.normal.x, out.normal.y),
+        )
+
+    def _ids_query(self, call: Callable[[Any, int], int], context: str) -> List[int]:
+        cap = max(1, len(self))
+        while True:
+            ids = (ctypes.c_int * cap)()
+            n = check(call(ids, cap), context)
+            if n <= cap:
+                return list(ids[:n])
+            cap = n
+
+    def query_circle(self, c: Iterable[float], radius: float = 0.0, mask: int = ALL_BITS) -> List[int]:
+        """Ids (increasing) of the circles overlapping the disc of centre c and ``radius``
+        (0: the circles whose interior holds c), whose category meets ``mask``, sensors included."""
+        cv, r, m = _lib.cc_vec2(*vec2(c, "c")), float(radius), _u32(mask, "mask")
+        return self._ids_query(lambda ids, cap: L.cc_world_query_circle(self._w, cv, r, m, ids, cap), "query_circle")
+
+    def query_box(self, lo: Iterable[float], hi: Iterable[float], mask: int = ALL_BITS) -> List[int]:
+        """Ids (increasing) of the circles that meet the closed box [lo, hi] (exactly: a circle
+        touching it counts), whose category meets ``mask``, sensors included."""
+        lv, hv, m = _lib.cc_vec2(*vec2(lo, "lo")), _lib.cc_vec2(*vec2(hi, "hi")), _u32(mask, "mask")
+        return self._ids_query(lambda ids, cap: L.cc_world_query_box(self._w, lv, hv, m, ids, cap), "query_box")
+
+    def hash(self) -> int:
+        """64-bit hash of the simulation state (cc_world_hash): equal for equal states, for
+        replays and lock-step runs (compare hashes to find where two runs part)."""
+        return int(L.cc_world_hash(self._w))
+
+    def unwrapped(self, id: int) -> Vec2:
+        """Circle id's position without the periods taken off (its position along open axes)."""
+        out = _lib.cc_vec2()
+        check(L.cc_world_get_unwrapped(self._w, _c_int(id, "id"), byref(out)), "unwrapped")
+        return (out.x, out.y)
 
     # ---- bulk state as numpy ------------------------------------------------------------
 
@@ -246,6 +490,12 @@ class World:
         m = t[:, 5]
         movable = np.isfinite(m)
         return (float(np.sum(m[movable] * t[movable, 2])), float(np.sum(m[movable] * t[movable, 3])))
+
+
+def _u32(v: int, name: str) -> int:
+    if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not 0 <= int(v) <= ALL_BITS:
+        raise ValueError(f"{name} must be an int in [0, 0xFFFFFFFF], got {v!r}")
+    return int(v)
 
 
 def _c_int(v: int, name: str) -> int:
