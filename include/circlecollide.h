@@ -361,7 +361,7 @@ CC_API void cc_world_def_init_sized(cc_world_def *def, size_t struct_size);
  * handshake): the exported function of this name, which a program built against 1.0 calls,
  * cannot know the caller's size, so it fills 1.0's def only (its size in struct_size, the 1.1
  * fields taking their defaults in the world). Taken by address, it is that 1.0 function. */
-CC_API void(cc_world_def_init)(cc_world_def *def);
+CC_API void cc_world_def_init(cc_world_def *def);
 #define cc_world_def_init(def) cc_world_def_init_sized((def), sizeof(cc_world_def))
 
 /* Bytes of memory cc_world_init needs for def (its capacities), or 0 when def is invalid or

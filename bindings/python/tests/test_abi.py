@@ -168,8 +168,8 @@ def test_every_struct_has_the_compiled_size_and_offsets():
 
 
 def test_world_def_init_writes_exactly_our_def():
-    # the library's cc_world_def_init reports its sizeof(cc_world_def) in struct_size; it must be
-    # ours (the same minor version), and the binding's helper must survive a larger one anyway
+    # cc_world_def_init_sized fills our def as we declared it (the same minor version: every field
+    # known), and the exported cc_world_def_init, which a 1.0 program calls, writes 1.0's def only
     d, lib_size = _lib.world_def_defaults()
     assert lib_size == ctypes.sizeof(_lib.cc_world_def)
     assert d.struct_size == ctypes.sizeof(_lib.cc_world_def)
@@ -178,8 +178,14 @@ def test_world_def_init_writes_exactly_our_def():
     assert not d.on_contact and not d.on_sensor
     # and the library writes nothing beyond that size
     room = (ctypes.c_ubyte * (ctypes.sizeof(_lib.cc_world_def) + 256))(*([0xA5] * (ctypes.sizeof(_lib.cc_world_def) + 256)))
-    _lib.lib.cc_world_def_init(ctypes.cast(room, ctypes.POINTER(_lib.cc_world_def)))
+    _lib.lib.cc_world_def_init_sized(ctypes.cast(room, ctypes.POINTER(_lib.cc_world_def)), ctypes.sizeof(_lib.cc_world_def))
     assert bytes(room[ctypes.sizeof(_lib.cc_world_def):]) == b"\xa5" * 256
+    # the 1.0 symbol: 1.0's def (up to `user`), nothing after it
+    end_1_0 = _lib.field_end(_lib.cc_world_def, "user")
+    room = (ctypes.c_ubyte * (ctypes.sizeof(_lib.cc_world_def) + 256))(*([0xA5] * (ctypes.sizeof(_lib.cc_world_def) + 256)))
+    _lib.lib.cc_world_def_init(ctypes.cast(room, ctypes.POINTER(_lib.cc_world_def)))
+    assert _lib.cc_world_def.from_buffer_copy(room).struct_size == end_1_0
+    assert bytes(room[end_1_0:]) == b"\xa5" * (len(room) - end_1_0)
 
 
 @pytest.mark.parametrize(

@@ -125,19 +125,14 @@ def test_def_rolling_decel_brings_a_circle_to_rest_where_computed():
     assert c.pos == pytest.approx((4.0, 0.0), abs=1e-12) and c.vel == (0.0, 0.0)
 
 
-# Library bug (1.1, reported): cc_world_set_circle_props' rolling_decel does not reach the motion
-# in SWEPT and DISCRETE, nor in EXACT before the first step (cc__settle_props returns before
-# cc__roll_reset). strict: these start to pass, and must then lose the mark, once it is fixed.
-ROLL_PROPS_BUG = pytest.mark.xfail(strict=True, reason="library: per-circle rolling_decel ignored here")
-
 
 @pytest.mark.parametrize(
     "mode, step_first",
     [
         ("exact", True),
-        pytest.param("exact", False, marks=ROLL_PROPS_BUG),
-        pytest.param("swept", True, marks=ROLL_PROPS_BUG),
-        pytest.param("discrete", True, marks=ROLL_PROPS_BUG),
+        ("exact", False),
+        ("swept", True),
+        ("discrete", True),
     ],
 )
 def test_per_circle_rolling_decel_and_an_immovable_one_ignores_it(mode, step_first):

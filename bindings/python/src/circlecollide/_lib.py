@@ -197,6 +197,7 @@ PROTOTYPES: dict[str, tuple[Any, list[Any]]] = {
     "cc_respond_segmentf": (c_int, [P(cc_circlef), P(cc_contactf), c_float]),
     "cc_closest_point_on_segmentf": (cc_vec2f, [cc_vec2f, P(cc_segmentf)]),
     "cc_world_def_init": (None, [P(cc_world_def)]),
+    "cc_world_def_init_sized": (None, [P(cc_world_def), ctypes.c_size_t]),
     "cc_world_size": (ctypes.c_size_t, [P(cc_world_def)]),
     "cc_world_init": (_vp, [_vp, ctypes.c_size_t, P(cc_world_def), P(c_int)]),
     "cc_world_add_circle": (c_int, [_vp, P(cc_circle)]),
@@ -308,14 +309,19 @@ lib = load()
 
 
 def world_def_defaults() -> "tuple[cc_world_def, int]":
-    """cc_world_def_init's defaults in our cc_world_def, and the struct_size the library wrote.
+    """The library's defaults in our cc_world_def, and the size of the def that library knows.
 
-    cc_world_def_init writes sizeof(cc_world_def) as the *library* was compiled: a library newer
-    than these declarations writes past the end of our struct (1.0 declarations under a 1.1
-    library did, and crashed). So it writes into a buffer with room to spare, and only our fields
-    are kept. The size it reports tells which fields that library knows (an older library leaves
-    the rest zero, which are their defaults).
+    A 1.1 library has cc_world_def_init_sized, which fills the fields of a def of the size we
+    give (what the C header's cc_world_def_init macro calls): it knows every field we declare.
+    The exported cc_world_def_init fills 1.0's def only (it cannot know its caller's size); a
+    1.0 library's writes its own sizeof, so it writes into a buffer with room to spare and only
+    our fields are kept; the size it reports tells which fields it knows (the rest stay zero,
+    their defaults).
     """
+    if not isinstance(lib.cc_world_def_init_sized, _Missing):
+        d = cc_world_def()
+        lib.cc_world_def_init_sized(ctypes.byref(d), ctypes.sizeof(cc_world_def))
+        return d, ctypes.sizeof(cc_world_def)
     room = (ctypes.c_uint64 * ((ctypes.sizeof(cc_world_def) + 4096) // 8))()
     lib.cc_world_def_init(ctypes.cast(room, ctypes.POINTER(cc_world_def)))
     d = cc_world_def.from_buffer_copy(room)

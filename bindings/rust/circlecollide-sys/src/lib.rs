@@ -245,7 +245,11 @@ extern "C" {
 // script sets `cc_has_world`), so that a library without them still links.
 #[cfg(cc_has_world)]
 extern "C" {
+    /// Fills 1.0's def only (the symbol a 1.0 program calls); use `cc_world_def_init_sized`.
     pub fn cc_world_def_init(def: *mut cc_world_def);
+    /// Defaults for every field of a def of `struct_size` bytes (what the C header's
+    /// `cc_world_def_init` macro calls with `sizeof(cc_world_def)`).
+    pub fn cc_world_def_init_sized(def: *mut cc_world_def, struct_size: usize);
     pub fn cc_world_size(def: *const cc_world_def) -> usize;
     pub fn cc_world_init(memory: *mut c_void, bytes: usize, def: *const cc_world_def, status: *mut c_int) -> *mut cc_world;
     pub fn cc_world_add_circle(w: *mut cc_world, c: *const cc_circle) -> c_int;

@@ -108,9 +108,9 @@ impl Default for WorldDef {
 
 fn c_default() -> sys::cc_world_def {
     let mut d = core::mem::MaybeUninit::<sys::cc_world_def>::zeroed();
-    // SAFETY: cc_world_def_init fills every field of the struct it is given.
+    // SAFETY: cc_world_def_init_sized fills every field of a def of the size given, ours.
     unsafe {
-        sys::cc_world_def_init(d.as_mut_ptr());
+        sys::cc_world_def_init_sized(d.as_mut_ptr(), core::mem::size_of::<sys::cc_world_def>());
         d.assume_init()
     }
 }

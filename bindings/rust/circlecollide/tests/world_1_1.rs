@@ -148,7 +148,6 @@ fn rolling_circles_slow_to_rest() {
 /// SWEPT and DISCRETE; the circle keeps the deceleration it had when it was added or last struck.
 /// `cargo test -- --ignored` runs it.
 #[test]
-#[ignore = "library bug: set_circle_props(rolling_decel) ignored before the first step and in SWEPT/DISCRETE"]
 fn set_rolling_decel_before_the_first_step() {
     // speed 2, decel 4: t_stop = 0.5, at rest at x = 0.5
     for mode in [Mode::Exact, Mode::Swept, Mode::Discrete] {
@@ -188,7 +187,6 @@ fn a_rolling_ball_strikes_a_resting_one_in_swept_mode() {
 /// Library bug (reported, not fixed here): in EXACT a rolling circle passes through a circle at
 /// rest (movable or immovable); SWEPT and DISCRETE find the impact.
 #[test]
-#[ignore = "library bug: in EXACT a rolling circle passes through a resting one"]
 fn a_rolling_ball_strikes_a_resting_one_in_exact_mode() {
     let (a, b, n) = rolling_impact(Mode::Exact, 1);
     assert_eq!(n, 1, "{a:?} {b:?}");
