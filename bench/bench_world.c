@@ -314,12 +314,14 @@ static int cmd_scaling(const opts *o)
  * with features absent, present but idle, and far away. */
 static int cmd_features(const opts *o)
 {
-    enum { BASE, SEG_CAP, FAR_WALLS, FAR_IMMOVABLE, FAR_BIG, PROPS_ALL, SENSORS, HALF_FILTERED, N_VARIANTS };
+    enum { BASE, SEG_CAP, FAR_WALLS, FAR_IMMOVABLE, FAR_BIG, PROPS_ALL, SENSORS, HALF_FILTERED, ROLL_FAR, ROLL_ALL,
+           N_VARIANTS };
     static const char *names[N_VARIANTS] = {"no walls, max_segments = 0", "max_segments = 4, no walls",
                                             "4 walls 1000 boxes away", "16 immovable circles far away",
                                             "1 immovable circle r = 2 far away",
                                             "every circle with props (filters)", "16 sensors in the gas",
-                                            "half the pairs filtered"};
+                                            "half the pairs filtered", "1 rolling circle far away",
+                                            "every circle rolls (slows 1% in the run)"};
     bench_scene s;
     int n = o->quick ? 2000 : 10000, reps = o->quick ? 3 : 9, v, k;
     double t_run = 5.0, base = 0.0;
@@ -370,6 +372,34 @@ static int cmd_features(const opts *o)
                     cc_world_set_circle_props(b.w, i, &p);
                 }
             }
+            if (var == ROLL_FAR) { /* one circle with friction, far away: the world predicts
+                                    * along rolling paths from then on (w->features) */
+                cc_circle c;
+                cc_circle_props p;
+                int id;
+                memset(&c, 0, sizeof c);
+                c.pos.x = c.pos.y = -1000.0 * L;
+                c.vel.x = 1.0;
+                c.radius = s.r_typ;
+                c.mass = 1.0;
+                id = cc_world_add_circle(b.w, &c);
+                p.struct_size = sizeof p;
+                cc_world_get_circle_props(b.w, id, &p);
+                p.rolling_decel = 1e-9;
+                cc_world_set_circle_props(b.w, id, &p);
+            }
+            if (var == ROLL_ALL) { /* decel = 1% of the mean speed over the run's time */
+                double vsum = 0.0;
+                for (i = 0; i < s.n; i++)
+                    vsum += sqrt(s.c[i].vel.x * s.c[i].vel.x + s.c[i].vel.y * s.c[i].vel.y);
+                for (i = 0; i < s.n; i++) {
+                    cc_circle_props p;
+                    p.struct_size = sizeof p;
+                    cc_world_get_circle_props(b.w, i, &p);
+                    p.rolling_decel = 0.01 * vsum / s.n / (t_run + 1.0 / 60);
+                    cc_world_set_circle_props(b.w, i, &p);
+                }
+            }
             if (var == SENSORS) /* 16 pockets of radius r_typ spread over the gas: same collisions */
                 for (i = 0; i < 16; i++) {
                     cc_circle c;
@@ -416,7 +446,7 @@ static int cmd_features(const opts *o)
         (void)base;
         printf("%-34s %14.2f %10.2f - %-9.2f %12llu %8.3f %10.3f%s\n", names[v], med, lo, hi,
                (unsigned long long)coll[v], rat[v], rat_min[v],
-               coll[v] == coll[BASE] ? "" : v == HALF_FILTERED ? "  (other collisions: by design)" : "  (different collisions!)");
+               coll[v] == coll[BASE] ? "" : v == HALF_FILTERED || v == ROLL_ALL ? "  (other collisions: by design)" : "  (different collisions!)");
         if (csv != NULL)
             fprintf(csv, "\"%s\",%.6g,%.6g,%.6g,%llu,%.6g,%.6g\n", names[v], med, lo, hi, (unsigned long long)coll[v],
                     rat[v], rat_min[v]);
@@ -432,6 +462,10 @@ static int cmd_features(const opts *o)
             bench_figure("feature_cost_16_sensors", rat_min[v]);
         if (v == HALF_FILTERED)
             bench_figure("feature_cost_half_filtered", rat_min[v]);
+        if (v == ROLL_FAR)
+            bench_figure("feature_cost_one_rolling_far", rat_min[v]);
+        if (v == ROLL_ALL)
+            bench_figure("feature_cost_all_rolling", rat_min[v]);
         free(cost[v]);
     }
     bench_scene_free(&s);

@@ -20,7 +20,7 @@
 void setUp(void) {}
 void tearDown(void) {}
 
-static unsigned long g_scenes = 2000, g_events = 50; /* small vs grid: a fifth of the scenes */
+static unsigned long g_scenes = 4000, g_events = 50; /* small vs grid: a fifth of the scenes */
 static uint64_t g_seed = 1;
 static int g_verbose;
 

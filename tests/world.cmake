@@ -13,10 +13,10 @@ cc_add_test(NAME test_world_periodic SOURCES test_world_periodic.c LABELS world)
 cc_add_test(NAME test_world_rolling SOURCES test_world_rolling.c LABELS world)
 cc_add_test(NAME test_world_def_compat SOURCES test_world_def_compat.c LABELS world)
 cc_add_test(NAME test_world_soak SOURCES test_world_soak.c LABELS world TIMEOUT 300)
-# The world against the plain reference simulator (issue 11): 2,000 random scenes against the
-# reference and 400 all-pairs against grid (about 2.5 min optimised: a third of the scenes roll,
-# and the reference sweeps every rolling pair three times per event; labelled slow, the ASan
-# build runs the short registration instead); scripts/test.d/35-world-reference.sh runs more.
+# The world against the plain reference simulator (issue 11): 4,000 random scenes against the
+# reference and 800 all-pairs against grid (about 2 min optimised: a third of the scenes roll,
+# and a rolling pair's sweep isolates the roots of a quartic; labelled slow, the ASan build runs
+# the short registration instead); scripts/test.d/35-world-reference.sh runs 10,000 more.
 cc_add_test(NAME test_world_reference SOURCES test_world_reference.c reference_world/reference_world.c
             reference_world/differential.c LABELS world slow TIMEOUT 600)
 add_test(NAME test_world_reference_short COMMAND test_world_reference --scenes 200 --seed 7000001)

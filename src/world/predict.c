@@ -139,10 +139,11 @@ CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, co
         return;
     if (i_fixed && isinf(CC__CARR(w, cc__cold, off_cold)[j].m))
         return; /* two immovable circles pass through each other */
-    if (feat && (w->features & CC__F_ROLL)) {
+    if (feat && (w->features & CC__F_ROLL) &&
+        (CC__CARR(w, cc__props, off_props)[i].roll > 0.0 || CC__CARR(w, cc__props, off_props)[j].roll > 0.0)) {
         cc__try_roll(w, i, j, sx, sy, now, best, tests, check, al);
         return;
-    }
+    } /* (two circles that do not decelerate, in a world where some do: the straight sweep) */
     dp.x = (bj->px + bj->vx * dt + sx) - bi->px;
     dp.y = (bj->py + bj->vy * dt + sy) - bi->py;
     dv.x = bj->vx - bi->vx;

@@ -850,18 +850,18 @@ static void roll_pair(rw_world *w, int i, int j, const cc_circle *cj, double h, 
     double vn, speeds, tt, a, b;
     cc_vec2 dp = sub(cj->pos, ci->pos);
     double vmin = 2.0 * approach_threshold(w, l1(ci->vel) + l1(cj->vel));
-    int r;
-    {
-        double len = sqrt(dp.x * dp.x + dp.y * dp.y);
-        if (len > 0.0 && fabs(len - R) <= 1e-6 * R &&
-            fabs((cj->vel.x - ci->vel.x) * dp.x + (cj->vel.y - ci->vel.y) * dp.y) <= 1e-6 * len * (l1(ci->vel) + l1(cj->vel)))
-            w->doubt.push = 1;
-    }
+    int r, ri, ro;
+    double len = sqrt(dp.x * dp.x + dp.y * dp.y);
+    if (len > 0.0 && fabs(len - R) <= 1e-6 * R &&
+        fabs((cj->vel.x - ci->vel.x) * dp.x + (cj->vel.y - ci->vel.y) * dp.y) <= 1e-6 * len * (l1(ci->vel) + l1(cj->vel)))
+        w->doubt.push = 1;
+    ro = cc__roll_sweep(dp.x, dp.y, ci->vel.x, ci->vel.y, ki, cj->vel.x, cj->vel.y, kj, R * (1.0 + 1e-6), h, -1, vmin,
+                        &tt, &a, &b);
+    if (ro == CC_MISS && len > R * (1.0 + 1e-6))
+        return; /* apart, and never within R (1 + 1e-6): the smaller distances are not reached either */
     r = cc__roll_sweep(dp.x, dp.y, ci->vel.x, ci->vel.y, ki, cj->vel.x, cj->vel.y, kj, R, h, -1, vmin, &t, &nx, &ny);
-    int ri = cc__roll_sweep(dp.x, dp.y, ci->vel.x, ci->vel.y, ki, cj->vel.x, cj->vel.y, kj, R * (1.0 - 1e-6), h, -1, vmin,
-                            &tt, &a, &b);
-    int ro = cc__roll_sweep(dp.x, dp.y, ci->vel.x, ci->vel.y, ki, cj->vel.x, cj->vel.y, kj, R * (1.0 + 1e-6), h, -1, vmin,
-                            &tt, &a, &b);
+    ri = cc__roll_sweep(dp.x, dp.y, ci->vel.x, ci->vel.y, ki, cj->vel.x, cj->vel.y, kj, R * (1.0 - 1e-6), h, -1, vmin,
+                        &tt, &a, &b);
     if (ri != ro)
         w->doubt.graze_gap = 0.0;
     if (r == CC_MISS)
