@@ -342,7 +342,8 @@ typedef struct cc_world_def {
     void *user;               /* passed to on_contact and on_sensor */
     /* ---- 1.1 (a def of 1.0's size gets these defaults) ---- */
     double rolling_decel;     /* >= 0: deceleration of every movable circle rolling on the
-                                 ground, length / time^2 (default 0: no friction) */
+                                 ground, length / time^2 (default 0: no friction); see
+                                 "Rolling to rest" */
     int restitution_mix;      /* a CC_MIX_*: a contact's restitution from its sides' (default MIN) */
     cc_sensor_fn on_sensor;   /* called for every sensor event, or NULL (default NULL) */
     cc_vec2 period;           /* a component > 0 makes the world wrap along that axis with that
@@ -427,6 +428,28 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  * and DISCRETE take the nearest image of each pair: a step must not carry a circle half a
  * period. Casts see every image along their path; queries report each circle once (its image
  * nearest the query). */
+
+/* Rolling to rest (1.1): a movable circle with a deceleration a > 0 (def.rolling_decel, or its
+ * own cc_circle_props.rolling_decel) slows along its direction of motion and stops: moving at
+ * v (speed s) from p, it is at p + v (t - a t^2 / (2 s)) until t_stop = s / a, and at
+ * p + v t_stop / 2 from then on. After an impulse it decelerates along its new velocity. An
+ * immovable circle (mass +INFINITY) never decelerates; a world whose circles all keep a = 0
+ * runs exactly as without friction.
+ * EXACT   Impacts between decelerating circles (and with walls) are found exactly on those
+ *         paths (the distance is a quartic in t between the stop times: its first falling root,
+ *         isolated and bisected to the last bit); a circle comes to rest at its exact stop time
+ *         and costs nothing from then on until something hits it. Two circles that come to rest
+ *         exactly touching do not collide. Pairs of which neither decelerates cost what they
+ *         cost without friction; a decelerating pair costs about 30 times a straight one
+ *         (docs/BENCHMARKS.md, bench_world features).
+ * SWEPT, DISCRETE  Move and sweep along the same paths, at the end of each step as before.
+ * Pushing  1.1 has no carried contacts: a circle pushed by one that decelerates less along their
+ *         normal (a kinematic circle driving into a rolling one, a circle with less friction
+ *         behind one with more, or a pair leaving each other at an angle after a collision at
+ *         restitution < 1 or below rest_speed) is a ball bouncing on a floor: its impacts come
+ *         ever closer in time, and cc_world_step returns CC_EVENT_LIMIT (see there) once it
+ *         reaches def.max_events. Circles of one deceleration moving apart after an elastic
+ *         impact (billiards) do not meet this. */
 
 /* The position of circle id without wrapping: where it would be had the periods not been taken
  * off (for diffusion: the mean squared displacement). Along an open axis, its position. CC_OK,
