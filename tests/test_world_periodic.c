@@ -52,6 +52,33 @@ static void test_through_the_edge(void)
     }
 }
 
+/* A circle set far outside the period is taken to its image exactly: x - n P, what fmod gives
+ * (the library computes it by long division with powers of two, as its embedded build calls no
+ * fmod), from 1e-300 to 1e300 and negative, and the unwrapped position keeps x. */
+static void test_far_positions_wrap_exactly(void)
+{
+    static const double xs[] = {1e-300, 9.999999999999998, 10.0, 10.000000000000002, -1e-300, -0.1, -10.0,
+                                123456.789, -987654321.123, 3.0e15 + 7.0, 1e300, -1e300, 7.0 * 0x1p60};
+    tw_mem m;
+    cc_world *w = periodic(&m, CC_MODE_EXACT, 10.0, 0.7, 8, 0);
+    size_t k;
+    TEST_ASSERT_NOT_NULL(w);
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &(cc_circle){{1.0, 0.25}, {0.0, 0.0}, 0.1, 1.0}));
+    for (k = 0; k < sizeof xs / sizeof xs[0]; k++) {
+        cc_circle c = tw_circle(xs[k], -xs[k], 0, 0, 0.1, 1), got;
+        double ex = fmod(xs[k], 10.0), ey = fmod(-xs[k], 0.7);
+        ex = ex < 0.0 ? ex + 10.0 : ex;
+        ey = ey < 0.0 ? ey + 0.7 : ey;
+        ex = ex >= 10.0 ? 0.0 : ex; /* a tiny negative remainder rounds up to the period: 0 */
+        ey = ey >= 0.7 ? 0.0 : ey;
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle(w, 0, &c));
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+        TEST_ASSERT_EQUAL_DOUBLE(ex, got.pos.x);
+        TEST_ASSERT_EQUAL_DOUBLE(ey, got.pos.y);
+    }
+    tw_free(&m);
+}
+
 /* Across the edge: a at x = 9, b at x = 1 (through the edge 2 apart), radii 0.5, a moving +1 at
  * b at rest, equal masses, elastic: they touch when 1 apart, at t = 1 (a at 10, shown as 0), a
  * stops and b leaves at +1. At t = 3: a at 0, b at 3. The impact is predicted before a crosses
@@ -216,6 +243,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_through_the_edge);
+    RUN_TEST(test_far_positions_wrap_exactly);
     RUN_TEST(test_impact_across_the_edge);
     RUN_TEST(test_virial_and_wall_impulse);
     RUN_TEST(test_channel);
