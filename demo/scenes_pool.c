@@ -114,6 +114,10 @@ int demo_scene_pool(demo_show *show)
     d.flash_radius = 2.2 * POOL_R;
     d.flash_capacity = 512;
     d.label = NULL;
+    d.rolling_decel = 0.0;
+    d.restitution_mix = CC_MIX_MIN;
+    d.on_sensor = NULL;
+    d.sensor_user = NULL;
     r = demo_stage_init(s, &d);
     if (r != 0)
         return r;
