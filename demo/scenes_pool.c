@@ -39,6 +39,15 @@ static const double pool_pockets[6][2] = {
     {0.0, 0.0}, {POOL_L, 0.0}, {0.0, POOL_W}, {POOL_L, POOL_W},
     {POOL_L / 2, -POOL_SIDE_DROP}, {POOL_L / 2, POOL_W + POOL_SIDE_DROP}};
 
+/* the cushions: long sides split by the side pockets, every corner left open */
+static const double cushions[6][4] = {
+    {POOL_CORNER_GAP, 0.0, POOL_L / 2 - POOL_SIDE_GAP, 0.0},
+    {POOL_L / 2 + POOL_SIDE_GAP, 0.0, POOL_L - POOL_CORNER_GAP, 0.0},
+    {POOL_CORNER_GAP, POOL_W, POOL_L / 2 - POOL_SIDE_GAP, POOL_W},
+    {POOL_L / 2 + POOL_SIDE_GAP, POOL_W, POOL_L - POOL_CORNER_GAP, POOL_W},
+    {0.0, POOL_CORNER_GAP, 0.0, POOL_W - POOL_CORNER_GAP},
+    {POOL_L, POOL_CORNER_GAP, POOL_L, POOL_W - POOL_CORNER_GAP}};
+
 typedef struct pool_state {
     int pocketed;
     int sensor_lo, sensor_hi;       /* the pockets' ids: [lo, hi] */
@@ -102,8 +111,9 @@ static void pool_backdrop(demo_show *show, int stage, demo_canvas *c, const demo
     demo_canvas_rect(c, demo_view_x(v, 0.0), demo_view_y(v, POOL_W), demo_view_x(v, POOL_L),
                      demo_view_y(v, 0.0), demo_rgb_make(24.0f, 110.0f, 68.0f), 1.0, DEMO_OVER);
     for (i = 0; i < 6; ++i)
-        demo_canvas_disc(c, demo_view_x(v, pool_pockets[i][0]), demo_view_y(v, pool_pockets[i][1]),
-                         POOL_POCKET_R * v->scale, demo_rgb_make(8.0f, 8.0f, 10.0f), 1.0, DEMO_OVER);
+        demo_canvas_disc(c, demo_view_x(v, pool_pockets[i][0]),
+                         demo_view_y(v, pool_pockets[i][1]), POOL_POCKET_R * v->scale,
+                         demo_rgb_make(8.0f, 8.0f, 10.0f), 1.0, DEMO_OVER);
 }
 
 static void pool_caption(demo_show *show, int stage, char *buf, size_t size)
@@ -137,7 +147,6 @@ int demo_scene_pool(demo_show *show)
     const double row = sqrt(3.0) * POOL_R; /* rows of touching balls are sqrt(3) radii apart */
     pool_state *st;
     cc_circle cue;
-    int cushion[6];
     double side;
     int k, j, r;
 
@@ -171,16 +180,11 @@ int demo_scene_pool(demo_show *show)
     show->nstages = 1;
 
     /* cushions: long sides split by the side pockets, every corner left open */
-    cushion[0] = demo_stage_add_wall(s, POOL_CORNER_GAP, 0.0, POOL_L / 2 - POOL_SIDE_GAP, 0.0);
-    cushion[1] = demo_stage_add_wall(s, POOL_L / 2 + POOL_SIDE_GAP, 0.0, POOL_L - POOL_CORNER_GAP, 0.0);
-    cushion[2] = demo_stage_add_wall(s, POOL_CORNER_GAP, POOL_W, POOL_L / 2 - POOL_SIDE_GAP, POOL_W);
-    cushion[3] =
-        demo_stage_add_wall(s, POOL_L / 2 + POOL_SIDE_GAP, POOL_W, POOL_L - POOL_CORNER_GAP, POOL_W);
-    cushion[4] = demo_stage_add_wall(s, 0.0, POOL_CORNER_GAP, 0.0, POOL_W - POOL_CORNER_GAP);
-    cushion[5] = demo_stage_add_wall(s, POOL_L, POOL_CORNER_GAP, POOL_L, POOL_W - POOL_CORNER_GAP);
-    for (k = 0; k < 6; ++k)
-        if (cushion[k] >= 0)
-            demo_stage_set_wall_restitution(s, cushion[k], POOL_CUSHION_E);
+    for (k = 0; k < 6; ++k) {
+        r = demo_stage_add_wall(s, cushions[k][0], cushions[k][1], cushions[k][2], cushions[k][3]);
+        if (r >= 0)
+            demo_stage_set_wall_restitution(s, r, POOL_CUSHION_E);
+    }
     /* the pockets' backs: the part of each rim outside the cushion lines (a corner's three
        quarters; a side pocket's rim below the line, which it meets asin(drop / R) above the
        horizontal) */

@@ -27,7 +27,7 @@ typedef struct demo_flash {
 #define DEMO_STYLE_SPEED 0 /* filled with its speed colour */
 #define DEMO_STYLE_MARKED 1 /* speed colour and a white rim: the cue ball, the puck, the heavy one */
 #define DEMO_STYLE_SOLID 2 /* a solid grey body: mallets and other bodies the demo drives */
-#define DEMO_STYLE_HIDDEN 3 /* not painted: sensors (the backdrop paints the pocket or goal) */
+#define DEMO_STYLE_HIDDEN 3 /* not painted: sensors (the backdrop paints pockets and goals) */
 
 /* Called for every sensor event of the stage's world (cc_world_def.on_sensor), with the
  * stage def's sensor_user. Like the world's callback, it may read the world but not change it:
