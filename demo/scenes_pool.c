@@ -50,6 +50,7 @@ static const double cushions[6][4] = {
 
 typedef struct pool_state {
     int pocketed;
+    int lost;                       /* balls that left the table through a cushion (tunnelled) */
     int sensor_lo, sensor_hi;       /* the pockets' ids: [lo, hi] */
     unsigned char in_pocket[32];    /* per ball id: its centre went over a hole (callback) */
     unsigned char removed[32];      /* per ball id: taken off the table (control) */
@@ -70,7 +71,7 @@ static void pool_control(demo_show *show, long frame)
 {
     demo_stage *s = &show->stage[0];
     pool_state *st = (pool_state *)show->state;
-    int id;
+    int id, i;
     (void)frame;
     for (id = 0; id < 32; ++id)
         if (st->in_pocket[id] && !st->removed[id]) {
@@ -78,9 +79,22 @@ static void pool_control(demo_show *show, long frame)
             if (demo_stage_remove_circle(s, id) == CC_OK)
                 ++st->pocketed;
         }
-    for (id = 0; id < s->count; ++id) /* the circles of the last frame */
-        if (s->circles[id].vel.x != 0.0 || s->circles[id].vel.y != 0.0)
+    for (i = 0; i < s->count; ++i) { /* the circles of the last frame */
+        const cc_circle *c = &s->circles[i];
+        id = s->ids[i];
+        if (id < 32 && !st->removed[id] &&
+            (c->pos.x < s->def.x0 || c->pos.x > s->def.x1 || c->pos.y < s->def.y0 ||
+             c->pos.y > s->def.y1)) {
+            /* beyond the rails: it passed through a cushion, which EXACT never lets happen
+               but a fast ball may do in DISCRETE or SWEPT mode */
+            st->removed[id] = 1;
+            if (demo_stage_remove_circle(s, id) == CC_OK)
+                ++st->lost;
+            continue;
+        }
+        if (c->vel.x != 0.0 || c->vel.y != 0.0)
             st->moving_until = cc_world_time(s->world);
+    }
 }
 
 /* The back of a pocket: walls along its rim from angle a0 through span (degrees). */
@@ -132,6 +146,8 @@ static void pool_report(demo_show *show, FILE *f)
         if (s->circles[i].vel.x != 0.0 || s->circles[i].vel.y != 0.0)
             ++rolling;
     fprintf(f, "  pocketed: %d of 16 balls; ", st->pocketed);
+    if (st->lost > 0)
+        fprintf(f, "%d passed through a cushion (tunnelled) and left the table; ", st->lost);
     if (rolling > 0)
         fprintf(f, "%d still rolling\n", rolling);
     else
