@@ -72,6 +72,8 @@ static void draw_body(demo_canvas *c, const demo_stage *s, const demo_view *v, i
     double r = body->radius * v->scale;
     int style = id < s->def.max_circles ? s->style_of[id] : DEMO_STYLE_SPEED;
     demo_rgb dark = demo_rgb_make(16.0f, 18.0f, 26.0f);
+    if (style == DEMO_STYLE_HIDDEN)
+        return;
     if (style == DEMO_STYLE_SOLID) {
         demo_canvas_disc(c, x, y, r, demo_rgb_make(172.0f, 178.0f, 190.0f), 1.0, DEMO_OVER);
         demo_canvas_disc(c, x, y, 0.45 * r, demo_rgb_make(110.0f, 116.0f, 130.0f), 1.0, DEMO_OVER);
@@ -121,7 +123,7 @@ void demo_render_stage(demo_canvas *c, const demo_stage *s, const demo_view *v, 
         hw = 0.75;
     if (s->def.trail_time > 0.0)
         for (i = 0; i < s->count; ++i)
-            if (s->ids[i] < s->def.max_circles)
+            if (s->ids[i] < s->def.max_circles && s->style_of[s->ids[i]] != DEMO_STYLE_HIDDEN)
                 draw_trail(c, s, v, s->ids[i], &s->circles[i], now);
     for (i = 0; i < s->nwalls; ++i)
         demo_canvas_capsule(c, demo_view_x(v, s->walls[i].a.x), demo_view_y(v, s->walls[i].a.y),

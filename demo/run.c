@@ -51,6 +51,11 @@ static void summary(demo_show *show, const demo_options *o, double seconds)
         if (s->def.restitution == 1.0)
             fprintf(stderr, "            energy drift %+.3e (relative; elastic: rounding only)\n",
                     demo_stage_drift(s));
+        else if (s->def.rolling_decel > 0.0) /* the world's friction slows them too */
+            fprintf(stderr,
+                    "            energy lost in collisions and rolling: %.1f%% of the peak kinetic "
+                    "energy (restitution %g, rolling deceleration %g)\n",
+                    -100.0 * demo_stage_drift(s), s->def.restitution, s->def.rolling_decel);
         else
             fprintf(stderr,
                     "            energy lost in collisions: %.1f%% of the peak kinetic energy "

@@ -2,7 +2,11 @@
  * between two heavy mallets that the demo drives like two simple players (guard the goal, strike
  * when the puck comes into their half). The mallets are ordinary circles whose velocity is set
  * every frame, so the puck's bounces off them are real collisions. A puck that enters a goal is
- * removed and a new one is served from the centre. Units: metres, seconds, kilograms. */
+ * removed and a new one is served from the centre. Each goal is a sensor circle behind its goal
+ * line (1.1): a disc so wide that, near the mouth, its edge follows the line one puck radius
+ * behind it, so its begin event means the puck has wholly crossed the line between the posts; the
+ * callback notes the goal and the demo scores it, removes the puck and serves before the next
+ * step. Units: metres, seconds, kilograms. */
 #include "scene.h"
 #include "scene_util.h"
 #include "prng.h"
@@ -21,6 +25,7 @@
 #define MALLET_R 0.06
 #define MALLET_M 1.0
 #define MALLET_VMAX 4.5 /* fastest a player moves a mallet */
+#define GOAL_SENSOR_R 1.0 /* the goals' sensor discs: wide, so nearly straight at the mouth */
 
 typedef struct hockey_state {
     demo_rng rng;
@@ -28,7 +33,19 @@ typedef struct hockey_state {
     int mallet[2];  /* left, right */
     int goals[2];   /* goals scored by left, right */
     int serves;
+    int goal_sensor[2]; /* ids of the sensors behind the left and the right goal line */
+    int scored_in;      /* the goal (0 left, 1 right) the puck entered in the last step, or -1 */
 } hockey_state;
+
+/* Only notes the goal: the world may not be changed from inside its callback. */
+static void hockey_on_sensor(const cc_sensor_event *e, void *user)
+{
+    hockey_state *st = (hockey_state *)user;
+    if (e->begin && e->visitor == st->puck && st->scored_in < 0)
+        st->scored_in = e->sensor == st->goal_sensor[0]   ? 0
+                        : e->sensor == st->goal_sensor[1] ? 1
+                                                          : -1;
+}
 
 static void serve(demo_show *show)
 {
@@ -94,8 +111,9 @@ static void hockey_control(demo_show *show, long frame)
     cc_circle p;
     int have = st->puck >= 0 && cc_world_get_circle(s->world, st->puck, &p) == CC_OK;
     (void)frame;
-    if (have && (p.pos.x < -PUCK_R || p.pos.x > RINK_L + PUCK_R)) {
-        ++st->goals[p.pos.x < 0.0 ? 1 : 0];
+    if (have && st->scored_in >= 0) {
+        ++st->goals[st->scored_in == 0 ? 1 : 0]; /* the left goal is the right player's point */
+        st->scored_in = -1;
         demo_stage_remove_circle(s, st->puck);
         st->puck = -1;
         have = 0;
@@ -160,7 +178,8 @@ int demo_scene_air_hockey(demo_show *show)
         return -100;
     show->state = st;
     demo_rng_seed(&st->rng, show->opt->seed);
-    d.max_circles = 4;
+    st->scored_in = -1;
+    d.max_circles = 5; /* two mallets, the puck, the two goals' sensors */
     d.max_segments = 10;
     d.mode = show->opt->mode;
     d.restitution = 0.9;
@@ -176,6 +195,10 @@ int demo_scene_air_hockey(demo_show *show)
     d.flash_radius = 2.0 * PUCK_R;
     d.flash_capacity = 256;
     d.label = NULL;
+    d.rolling_decel = 0.0;
+    d.restitution_mix = CC_MIX_MIN;
+    d.on_sensor = hockey_on_sensor;
+    d.sensor_user = st;
     r = demo_stage_init(s, &d);
     if (r != 0)
         return r;
@@ -197,6 +220,13 @@ int demo_scene_air_hockey(demo_show *show)
     st->mallet[0] = demo_stage_add_circle(s, &m, DEMO_STYLE_SOLID);
     m.pos.x = L - 0.2;
     st->mallet[1] = demo_stage_add_circle(s, &m, DEMO_STYLE_SOLID);
+    /* the goals: sensor discs behind the goal lines, their edge on the rink's axis one puck
+       radius behind the line (begin: the puck's centre is a radius past the line); every
+       mallet stays far out of them */
+    st->goal_sensor[0] =
+        demo_stage_add_sensor(s, -(GOAL_SENSOR_R + 2.0 * PUCK_R), 0.5 * W, GOAL_SENSOR_R);
+    st->goal_sensor[1] =
+        demo_stage_add_sensor(s, L + GOAL_SENSOR_R + 2.0 * PUCK_R, 0.5 * W, GOAL_SENSOR_R);
     serve(show);
 
     show->control = hockey_control;

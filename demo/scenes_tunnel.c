@@ -71,6 +71,10 @@ int demo_scene_tunnel(demo_show *show)
         d.flash_radius = 0.4;
         d.flash_capacity = 256;
         d.label = NULL;
+        d.rolling_decel = 0.0;
+        d.restitution_mix = CC_MIX_MIN;
+        d.on_sensor = NULL;
+        d.sensor_user = NULL;
         r = demo_stage_init(s, &d);
         if (r != 0)
             return r;

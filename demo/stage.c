@@ -63,6 +63,13 @@ static void on_contact(const cc_contact_event *e, void *user)
     }
 }
 
+static void on_sensor(const cc_sensor_event *e, void *user)
+{
+    demo_stage *s = (demo_stage *)user;
+    if (s->def.on_sensor != NULL)
+        s->def.on_sensor(e, s->def.sensor_user);
+}
+
 int demo_stage_init(demo_stage *s, const demo_stage_def *def)
 {
     cc_world_def wd;
@@ -80,6 +87,9 @@ int demo_stage_init(demo_stage *s, const demo_stage_def *def)
     wd.rest_speed = def->rest_speed;
     wd.on_contact = on_contact;
     wd.user = s;
+    wd.rolling_decel = def->rolling_decel;
+    wd.restitution_mix = def->restitution_mix;
+    wd.on_sensor = def->on_sensor != NULL ? on_sensor : NULL;
     bytes = cc_world_size(&wd);
     if (bytes == 0)
         return CC_ERR_INVALID;
@@ -151,6 +161,63 @@ int demo_stage_add_wall(demo_stage *s, double ax, double ay, double bx, double b
     if (s->nwalls < s->def.max_segments)
         s->walls[s->nwalls++] = seg;
     return id;
+}
+
+int demo_stage_add_sensor(demo_stage *s, double x, double y, double radius)
+{
+    cc_circle c;
+    cc_circle_props p;
+    int id, r;
+    c.pos.x = x;
+    c.pos.y = y;
+    c.vel.x = 0.0;
+    c.vel.y = 0.0;
+    c.radius = radius;
+    c.mass = INFINITY;
+    id = demo_stage_add_circle(s, &c, DEMO_STYLE_HIDDEN);
+    if (id < 0)
+        return id;
+    p.struct_size = sizeof p;
+    r = cc_world_get_circle_props(s->world, id, &p);
+    if (r == CC_OK) {
+        p.sensor = 1;
+        r = cc_world_set_circle_props(s->world, id, &p);
+    }
+    if (r != CC_OK) {
+        note_error(s, r, "cc_world_set_circle_props (sensor)");
+        return r;
+    }
+    return id;
+}
+
+int demo_stage_set_circle_restitution(demo_stage *s, int id, double restitution)
+{
+    cc_circle_props p;
+    int r;
+    p.struct_size = sizeof p;
+    r = cc_world_get_circle_props(s->world, id, &p);
+    if (r == CC_OK) {
+        p.restitution = restitution;
+        r = cc_world_set_circle_props(s->world, id, &p);
+    }
+    if (r != CC_OK)
+        note_error(s, r, "cc_world_set_circle_props");
+    return r;
+}
+
+int demo_stage_set_wall_restitution(demo_stage *s, int id, double restitution)
+{
+    cc_segment_props p;
+    int r;
+    p.struct_size = sizeof p;
+    r = cc_world_get_segment_props(s->world, id, &p);
+    if (r == CC_OK) {
+        p.restitution = restitution;
+        r = cc_world_set_segment_props(s->world, id, &p);
+    }
+    if (r != CC_OK)
+        note_error(s, r, "cc_world_set_segment_props");
+    return r;
 }
 
 int demo_stage_set_circle(demo_stage *s, int id, const cc_circle *c)

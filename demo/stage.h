@@ -27,6 +27,12 @@ typedef struct demo_flash {
 #define DEMO_STYLE_SPEED 0 /* filled with its speed colour */
 #define DEMO_STYLE_MARKED 1 /* speed colour and a white rim: the cue ball, the puck, the heavy one */
 #define DEMO_STYLE_SOLID 2 /* a solid grey body: mallets and other bodies the demo drives */
+#define DEMO_STYLE_HIDDEN 3 /* not painted: sensors (the backdrop paints pockets and goals) */
+
+/* Called for every sensor event of the stage's world (cc_world_def.on_sensor), with the
+ * stage def's sensor_user. Like the world's callback, it may read the world but not change it:
+ * note what happened and act on it in the scene's control hook. */
+typedef void (*demo_sensor_fn)(const cc_sensor_event *event, void *user);
 
 typedef struct demo_stage_def {
     int max_circles, max_segments;
@@ -40,6 +46,11 @@ typedef struct demo_stage_def {
     double flash_radius;   /* a flash's final radius in world units */
     int flash_capacity;    /* flashes remembered at once (the oldest give way) */
     const char *label;     /* a caption for the stage, or NULL */
+    /* the world's 1.1 settings (zero them with the rest of the def when unused) */
+    double rolling_decel;  /* cc_world_def.rolling_decel: the ground's deceleration */
+    int restitution_mix;   /* cc_world_def.restitution_mix (CC_MIX_MIN is 0) */
+    demo_sensor_fn on_sensor; /* or NULL */
+    void *sensor_user;
 } demo_stage_def;
 
 typedef struct demo_stage {
@@ -77,6 +88,13 @@ void demo_stage_free(demo_stage *s);
 /* Adds a circle or a wall; returns the id or a negative error (also recorded in s->error). */
 int demo_stage_add_circle(demo_stage *s, const cc_circle *c, int style);
 int demo_stage_add_wall(demo_stage *s, double ax, double ay, double bx, double by);
+/* Adds an immovable sensor circle (a pocket, a goal mouth) that is not painted; returns its id
+ * or a negative error (also recorded in s->error). */
+int demo_stage_add_sensor(demo_stage *s, double x, double y, double radius);
+/* Sets the restitution of a circle or a wall through its properties (0 or a negative error,
+ * also recorded in s->error). */
+int demo_stage_set_circle_restitution(demo_stage *s, int id, double restitution);
+int demo_stage_set_wall_restitution(demo_stage *s, int id, double restitution);
 /* Replaces a circle's state, booking the change of kinetic energy as the demo's. */
 int demo_stage_set_circle(demo_stage *s, int id, const cc_circle *c);
 /* Removes a circle (its energy leaves with it, booked as the demo's). */
