@@ -45,9 +45,10 @@ function(demo_golden scene)
 endfunction()
 
 # Small frames, and enough simulated time for each scene's first events: the cue ball reaches
-# the rack at 0.2 s, the cradle's balls meet at 0.4 s, the puck reaches a mallet or a rail.
+# the rack at 0.2 s, the cradle's balls meet at 0.4 s, the puck reaches a mallet and a rail and
+# enters the first goal (a sensor) before 1.5 s.
 demo_golden(pool --size 160x90 --frames 24 --fps 20)
-demo_golden(air-hockey --size 160x90 --frames 16 --fps 20 --seed 3)
+demo_golden(air-hockey --size 160x90 --frames 30 --fps 20 --seed 3)
 demo_golden(cradle --size 160x90 --frames 16 --fps 20)
 demo_golden(gas --size 160x90 --frames 4 --fps 20 --seed 7)
 demo_golden(tunnel --size 192x108 --frames 12 --fps 30)
