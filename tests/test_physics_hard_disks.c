@@ -1,0 +1,382 @@
+/* Physics validation (issue 15): the world, in EXACT mode on a periodic square box, simulates a
+ * hard-disk fluid correctly. N = 400 equal disks (radius 0.5, mass 1) at area fractions 0.1, 0.3
+ * and 0.5, started on a square lattice with all speeds equal (random directions, zero total
+ * momentum, total kinetic energy N kT with kT = 1), equilibrated, then measured over blocks:
+ *   1. equation of state: Z = P A / (N kT) from the virial (cc_world_stats.virial) against
+ *      Henderson's Z = (1 + eta^2 / 8) / (1 - eta)^2, within max(4 sigma, 1.5 %);
+ *   2. collision rate (cc_world_stats.collisions) against Enskog's rate with the contact value
+ *      g(sigma) taken from the measured Z (an identity for hard disks), within 2 %;
+ *   3. Maxwell-Boltzmann: velocity components pooled over disks and snapshots pass a
+ *      Kolmogorov-Smirnov test against the Gaussian of variance kT/m at 1 %, the mean speed is
+ *      sqrt(pi kT / (2 m)), and the (equal-speed) start fails both;
+ *   4. kinetic energy and momentum conserved to 1e-10 relative, and the centre of mass of the
+ *      unwrapped positions (cc_world_get_unwrapped) stays put.
+ * docs/PHYSICS.md derives the formulas and lists the figures. Options (for scripts/physics-report.sh
+ * and to show that the test can fail): --blocks B, --per-block C (collisions per disk per block),
+ * --seed S, --virial-scale F (multiplies the measured virial: 0.5 must fail), --ideal (compares
+ * with the ideal gas Z = 1: must fail). */
+#include "unity.h"
+
+#include "circlecollide.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+#define NDISK 400
+#define SIDE 20 /* SIDE * SIDE = NDISK lattice sites */
+#define MAXBLOCKS 64
+#define RADIUS 0.5
+#define KT 1.0
+
+static int g_blocks = 10;
+static double g_per_block = 100.0; /* collisions per disk in each block */
+static double g_equil = 20.0;      /* collisions per disk to equilibrate */
+static uint64_t g_seed = 15;
+static double g_virial_scale = 1.0;
+static int g_ideal = 0;
+
+void setUp(void) {}
+void tearDown(void) {}
+
+/* ---- a small deterministic generator (splitmix64) ---- */
+static uint64_t rng_state;
+static uint64_t rng_next(void)
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+static double rng_uniform(void) { return (double)(rng_next() >> 11) * (1.0 / 9007199254740992.0); }
+
+/* ---- a world in malloc'ed, 16-byte aligned memory ---- */
+typedef struct sim {
+    unsigned char *raw;
+    cc_world *w;
+    double eta, box, sigma;
+} sim;
+
+static void sim_free(sim *s)
+{
+    free(s->raw);
+    memset(s, 0, sizeof *s);
+}
+
+static cc_world_stats stats_of(const cc_world *w)
+{
+    cc_world_stats st;
+    memset(&st, 0, sizeof st);
+    st.struct_size = sizeof st;
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_stats(w, &st));
+    return st;
+}
+
+/* Kinetic energy, momentum and the sum of |p| (the scale the momentum is compared with). */
+static void totals(const cc_world *w, double *ke, double *px, double *py, double *pabs)
+{
+    static cc_circle c[NDISK];
+    int i;
+    TEST_ASSERT_EQUAL_INT(NDISK, cc_world_get_circles(w, NULL, c, NDISK));
+    *ke = *px = *py = *pabs = 0.0;
+    for (i = 0; i < NDISK; i++) {
+        *ke += 0.5 * c[i].mass * (c[i].vel.x * c[i].vel.x + c[i].vel.y * c[i].vel.y);
+        *px += c[i].mass * c[i].vel.x;
+        *py += c[i].mass * c[i].vel.y;
+        *pabs += c[i].mass * hypot(c[i].vel.x, c[i].vel.y);
+    }
+}
+
+static void centre_of_mass(const cc_world *w, double *x, double *y)
+{
+    int i;
+    *x = *y = 0.0;
+    for (i = 0; i < NDISK; i++) {
+        cc_vec2 u;
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_unwrapped(w, i, &u));
+        *x += u.x;
+        *y += u.y;
+    }
+    *x /= NDISK;
+    *y /= NDISK;
+}
+
+/* N disks on a square lattice in a periodic box of side L with N pi r^2 = eta L^2; all speeds
+ * equal in random directions (a start far from Maxwell-Boltzmann), the mean velocity taken
+ * off and the velocities scaled so that the kinetic energy is exactly N kT. */
+static void sim_make(sim *s, double eta)
+{
+    static cc_circle c[NDISK];
+    cc_world_def d;
+    size_t bytes;
+    int st = -1, i;
+    double mx = 0.0, my = 0.0, ke = 0.0, f, a;
+    memset(s, 0, sizeof *s);
+    s->eta = eta;
+    s->sigma = 2.0 * RADIUS;
+    s->box = sqrt(NDISK * M_PI * RADIUS * RADIUS / eta);
+    cc_world_def_init(&d);
+    d.mode = CC_MODE_EXACT;
+    d.max_circles = NDISK;
+    d.restitution = 1.0;
+    d.period.x = s->box;
+    d.period.y = s->box;
+    bytes = cc_world_size(&d);
+    TEST_ASSERT_TRUE(bytes > 0);
+    s->raw = (unsigned char *)malloc(bytes + 16);
+    TEST_ASSERT_NOT_NULL(s->raw);
+    s->w = cc_world_init(s->raw + ((16u - ((size_t)s->raw & 15u)) & 15u), bytes, &d, &st);
+    TEST_ASSERT_EQUAL_INT(CC_OK, st);
+    TEST_ASSERT_NOT_NULL(s->w);
+    a = s->box / SIDE;
+    TEST_ASSERT_TRUE(a > s->sigma); /* the lattice does not overlap */
+    for (i = 0; i < NDISK; i++) {
+        double th = 2.0 * M_PI * rng_uniform();
+        c[i].pos.x = (i % SIDE + 0.5) * a;
+        c[i].pos.y = (i / SIDE + 0.5) * a;
+        c[i].vel.x = cos(th);
+        c[i].vel.y = sin(th);
+        c[i].radius = RADIUS;
+        c[i].mass = 1.0;
+        mx += c[i].vel.x;
+        my += c[i].vel.y;
+    }
+    mx /= NDISK;
+    my /= NDISK;
+    for (i = 0; i < NDISK; i++) {
+        c[i].vel.x -= mx;
+        c[i].vel.y -= my;
+        ke += 0.5 * (c[i].vel.x * c[i].vel.x + c[i].vel.y * c[i].vel.y);
+    }
+    f = sqrt(NDISK * KT / ke);
+    for (i = 0; i < NDISK; i++) {
+        c[i].vel.x *= f;
+        c[i].vel.y *= f;
+        TEST_ASSERT_EQUAL_INT(i, cc_world_add_circle(s->w, &c[i]));
+    }
+}
+
+/* ---- Maxwell-Boltzmann checks ---- */
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Kolmogorov-Smirnov statistic of the samples x[0..n) (sorted here) against N(0, var). */
+static double ks_gauss(double *x, int n, double var)
+{
+    double d = 0.0, sd = sqrt(var);
+    int i;
+    qsort(x, (size_t)n, sizeof *x, cmp_double);
+    for (i = 0; i < n; i++) {
+        double cdf = 0.5 * erfc(-x[i] / (sd * sqrt(2.0)));
+        double lo = cdf - (double)i / n, hi = (double)(i + 1) / n - cdf;
+        if (lo > d)
+            d = lo;
+        if (hi > d)
+            d = hi;
+    }
+    return d;
+}
+
+/* Appends both velocity components of every disk to comp and its speed to speed. */
+static void snapshot(const cc_world *w, double *comp, int *ncomp, double *speed, int *nspeed)
+{
+    static cc_circle c[NDISK];
+    int i;
+    TEST_ASSERT_EQUAL_INT(NDISK, cc_world_get_circles(w, NULL, c, NDISK));
+    for (i = 0; i < NDISK; i++) {
+        comp[(*ncomp)++] = c[i].vel.x;
+        comp[(*ncomp)++] = c[i].vel.y;
+        speed[(*nspeed)++] = hypot(c[i].vel.x, c[i].vel.y);
+    }
+}
+
+static double mean_sd(const double *x, int n, double *sd)
+{
+    double m = 0.0, v = 0.0;
+    int i;
+    for (i = 0; i < n; i++)
+        m += x[i];
+    m /= n;
+    for (i = 0; i < n; i++)
+        v += (x[i] - m) * (x[i] - m);
+    *sd = sqrt(v / (n - 1));
+    return m;
+}
+
+/* The asymptotic 1 % critical value of the one-sample KS statistic: sqrt(-ln(0.005) / 2). */
+static double ks_crit_1pc(int n) { return sqrt(-0.5 * log(0.005)) / sqrt((double)n); }
+
+/* ---- the run at one area fraction ---- */
+typedef struct result {
+    double z, z_err, z_h, ratio, ratio_err, ks, ks_crit, ks0, vmean, vmean_err, vmean0;
+    double de, dp, dcm;
+} result;
+
+static double henderson(double eta) { return (1.0 + eta * eta / 8.0) / ((1.0 - eta) * (1.0 - eta)); }
+
+/* Enskog's collision rate per disk in 2D from Z: 4 (Z - 1) / sigma * sqrt(kT / (pi m)). */
+static double enskog_rate(double z, double sigma) { return 4.0 * (z - 1.0) / sigma * sqrt(KT / M_PI); }
+
+static void run_eta(double eta, result *r)
+{
+    static double comp[2 * NDISK * (MAXBLOCKS + 1)], speed[NDISK * (MAXBLOCKS + 1)];
+    double zb[MAXBLOCKS], rb[MAXBLOCKS];
+    int ncomp = 0, nspeed = 0, b, nb = g_blocks;
+    sim s;
+    cc_world_stats s0, s1, sa, sb;
+    double ke0, px0, py0, pa0, ke1, px1, py1, pa1, cx0, cy0, cx1, cy1, sd, gamma_h, t_block, t0;
+    double wsum = 0.0, tsum = 0.0, csum = 0.0;
+
+    rng_state = g_seed * 1000003u + (uint64_t)(eta * 1000.0);
+    sim_make(&s, eta);
+    gamma_h = enskog_rate(henderson(eta), s.sigma); /* the expected rate, to size the blocks */
+
+    /* the start: all speeds equal; must fail the Maxwell-Boltzmann checks */
+    snapshot(s.w, comp, &ncomp, speed, &nspeed);
+    r->ks0 = ks_gauss(comp, ncomp, KT);
+    r->vmean0 = mean_sd(speed, nspeed, &sd);
+    ncomp = nspeed = 0;
+
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(s.w, 0.0)); /* settle the start (no overlaps) */
+    totals(s.w, &ke0, &px0, &py0, &pa0);
+    centre_of_mass(s.w, &cx0, &cy0);
+
+    /* equilibrate: about g_equil collisions per disk (each collision involves two disks) */
+    s0 = stats_of(s.w);
+    while ((double)(stats_of(s.w).collisions - s0.collisions) < g_equil * NDISK / 2.0)
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(s.w, 1.0 / gamma_h));
+
+    /* measure over nb blocks of fixed duration */
+    t_block = g_per_block / gamma_h;
+    for (b = 0; b < nb; b++) {
+        double dw, dt, dc, zz;
+        sa = stats_of(s.w);
+        t0 = cc_world_time(s.w);
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(s.w, t_block));
+        sb = stats_of(s.w);
+        dt = cc_world_time(s.w) - t0;
+        dw = (sb.virial - sa.virial) * g_virial_scale;
+        dc = (double)(sb.collisions - sa.collisions);
+        zz = 1.0 + dw / (2.0 * dt * NDISK * KT); /* P A = N kT + virial / (2 t) */
+        zb[b] = zz;
+        rb[b] = (2.0 * dc / (NDISK * dt)) / enskog_rate(zz, s.sigma);
+        wsum += dw;
+        tsum += dt;
+        csum += dc;
+        snapshot(s.w, comp, &ncomp, speed, &nspeed);
+    }
+    s1 = stats_of(s.w);
+    totals(s.w, &ke1, &px1, &py1, &pa1);
+    centre_of_mass(s.w, &cx1, &cy1);
+
+    r->z = 1.0 + wsum / (2.0 * tsum * NDISK * KT);
+    r->z_err = 0.0;
+    (void)mean_sd(zb, nb, &sd);
+    r->z_err = sd / sqrt((double)nb);
+    r->z_h = g_ideal ? 1.0 : henderson(eta);
+    r->ratio = (2.0 * csum / (NDISK * tsum)) / enskog_rate(r->z, s.sigma);
+    (void)mean_sd(rb, nb, &sd);
+    r->ratio_err = sd / sqrt((double)nb);
+    r->ks = ks_gauss(comp, ncomp, KT);
+    r->ks_crit = ks_crit_1pc(ncomp);
+    r->vmean = mean_sd(speed, nspeed, &sd);
+    r->vmean_err = sd / sqrt((double)nspeed);
+    r->de = fabs(ke1 - ke0) / ke0;
+    r->dp = hypot(px1 - px0, py1 - py0) / pa0;
+    r->dcm = hypot(cx1 - cx0, cy1 - cy0) / s.box;
+
+    printf("eta %.2f: L %.4f, %llu collisions, t %.3f; Z %.5f +- %.5f, Henderson %.5f (%+.2f %%, "
+           "%.1f sigma); rate / Enskog(Z) %.5f +- %.5f; KS %.5f (1 %% crit %.5f, start %.4f); "
+           "mean speed %.5f +- %.5f (MB %.5f, start %.4f); dE/E %.1e, dP/sum|p| %.1e, dCM/L %.1e; "
+           "max overlap %.1e\n",
+           eta, s.box, (unsigned long long)s1.collisions, cc_world_time(s.w), r->z, r->z_err, r->z_h,
+           100.0 * (r->z - r->z_h) / r->z_h, fabs(r->z - r->z_h) / r->z_err, r->ratio, r->ratio_err,
+           r->ks, r->ks_crit, r->ks0, r->vmean, r->vmean_err, sqrt(M_PI * KT / 2.0), r->vmean0, r->de,
+           r->dp, r->dcm, s1.max_overlap);
+    fflush(stdout);
+    sim_free(&s);
+}
+
+static void check(const result *r)
+{
+    double vmb = sqrt(M_PI * KT / 2.0);
+    double tol = fmax(4.0 * r->z_err, 0.015 * r->z_h);
+    /* 1. equation of state */
+    TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(tol, r->z_h, r->z, "Z from the virial vs Henderson");
+    /* 2. collision rate vs Enskog with g(sigma) from the measured Z */
+    TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(fmax(0.02, 4.0 * r->ratio_err), 1.0, r->ratio,
+                                      "collision rate / Enskog(Z)");
+    /* 3. Maxwell-Boltzmann, and the start is not */
+    TEST_ASSERT_TRUE_MESSAGE(r->ks < r->ks_crit, "KS statistic above the 1 % critical value");
+    TEST_ASSERT_TRUE_MESSAGE(r->ks0 > r->ks_crit, "the start should not pass the KS test");
+    TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(4.0 * r->vmean_err, vmb, r->vmean, "mean speed vs sqrt(pi kT/2m)");
+    TEST_ASSERT_TRUE_MESSAGE(fabs(r->vmean0 - vmb) > 4.0 * r->vmean_err, "the start's mean speed");
+    /* 4. conservation */
+    TEST_ASSERT_TRUE_MESSAGE(r->de < 1e-10, "kinetic energy not conserved");
+    TEST_ASSERT_TRUE_MESSAGE(r->dp < 1e-10, "momentum not conserved");
+    TEST_ASSERT_TRUE_MESSAGE(r->dcm < 1e-10, "centre of mass (unwrapped) moved");
+}
+
+static void test_eta_010(void)
+{
+    result r;
+    run_eta(0.1, &r);
+    check(&r);
+}
+
+static void test_eta_030(void)
+{
+    result r;
+    run_eta(0.3, &r);
+    check(&r);
+}
+
+static void test_eta_050(void)
+{
+    result r;
+    run_eta(0.5, &r);
+    check(&r);
+}
+
+int main(int argc, char **argv)
+{
+    int i;
+    for (i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--blocks") && i + 1 < argc)
+            g_blocks = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--per-block") && i + 1 < argc)
+            g_per_block = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--equil") && i + 1 < argc)
+            g_equil = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--seed") && i + 1 < argc)
+            g_seed = (uint64_t)strtoull(argv[++i], NULL, 10);
+        else if (!strcmp(argv[i], "--virial-scale") && i + 1 < argc)
+            g_virial_scale = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--ideal"))
+            g_ideal = 1;
+        else {
+            fprintf(stderr, "usage: %s [--blocks B (2..%d)] [--per-block C] [--equil C] [--seed S] "
+                            "[--virial-scale F] [--ideal]\n",
+                    argv[0], MAXBLOCKS);
+            return 2;
+        }
+    }
+    if (g_blocks < 2 || g_blocks > MAXBLOCKS || !(g_per_block > 0.0) || !(g_equil >= 0.0)) {
+        fprintf(stderr, "bad options\n");
+        return 2;
+    }
+    UNITY_BEGIN();
+    RUN_TEST(test_eta_010);
+    RUN_TEST(test_eta_030);
+    RUN_TEST(test_eta_050);
+    return UNITY_END();
+}
