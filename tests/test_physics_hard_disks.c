@@ -36,8 +36,8 @@
 #define KT 1.0
 
 static int g_blocks = 10;
-static double g_per_block = 100.0; /* collisions per disk in each block */
-static double g_equil = 20.0;      /* collisions per disk to equilibrate */
+static double g_per_block = 300.0; /* collisions per disk in each block */
+static double g_equil = 100.0;     /* collisions per disk to equilibrate */
 static uint64_t g_seed = 15;
 static double g_virial_scale = 1.0;
 static int g_ideal = 0;
