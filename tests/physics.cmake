@@ -1,4 +1,5 @@
 # Physics validation (issue 15): the world simulates a hard-disk fluid (equation of state from
 # the virial against Henderson's, collision rate against Enskog's, Maxwell-Boltzmann velocities,
-# conservation). About 2 s optimised; docs/PHYSICS.md has the formulas and the figures.
+# conservation). About 3 s CPU optimised (6 s wall on the shared 2 cores), 8.5 s CPU with ASan +
+# UBSan; docs/PHYSICS.md has the formulas and the figures.
 cc_add_test(NAME test_physics_hard_disks SOURCES test_physics_hard_disks.c LABELS physics TIMEOUT 300)
