@@ -117,6 +117,16 @@ static void test_head_on_both_rolling(void)
     b = circle(10, 0, -2, 0, 1, 1);
     expect_hit(&a, 0.0, &b, 1.0, HUGE_VAL, 6, 1, 0, 7, 0, 1e-15);
     expect_miss(&a, 0.0, &b, 1.0, 5.5);
+    /* the float twin: the same exact numbers */
+    {
+        cc_circlef fa = {{0, 0}, {2, 0}, 1.25f, 1}, fb = {{10, 0}, {-2, 0}, 1.25f, 1};
+        cc_contactf fk;
+        TEST_ASSERT_EQUAL_INT(CC_HIT, cc_sweep_rollingf(&fa, 0.5f, &fb, 0.5f, HUGE_VALF, &fk));
+        TEST_ASSERT_FLOAT_WITHIN(4 * FLT_EPSILON * 3, 3.0f, fk.t);
+        TEST_ASSERT_FLOAT_WITHIN(4 * FLT_EPSILON * 5, 5.0f, fk.point.x);
+        fa.radius = fb.radius = 1;
+        TEST_ASSERT_EQUAL_INT(CC_MISS, cc_sweep_rollingf(&fa, 0.5f, &fb, 0.5f, HUGE_VALF, &fk));
+    }
     /* overlapping at the start: cc_sweep's contact, whatever the deceleration */
     {
         cc_contact k1 = sentinel_contact(), k2 = sentinel_contact();
@@ -358,11 +368,12 @@ static long double ref_first(const ref_pair *p, long double lo, long double hi, 
     return -1;
 }
 
-/* 20,000 random rolling pairs (mostly both rolling, some one at rest or straight, decel ratios up
- * to 1e6, lengths scaled 2^-20 .. 2^20 and moved up to 2^20 L from the origin, t_max finite or
+/* 20,000 random rolling pairs (mostly both rolling, some one at rest or straight, a sixth placed
+ * so that b rests about R from where a stops, decel ratios up to 2^30 ~ 1e9, lengths scaled
+ * 2^-30 .. 2^30 ~ 1e-9 .. 1e9 and moved up to 2^49 L ~ 5.6e14 L from the origin, t_max finite or
  * not). The reference samples [0, min(t_max, the last stop)] at 4,000 points and bisects the first
  * sign change in long double; where it and the library disagree on hit or miss, the window is
- * sampled again 1,000 times finer around the library's time (a dip between two samples). What is
+ * sampled again 4,000 times finer around the library's time (a dip between two samples). What is
  * left must lie in the rounding band: the reference's approach speed at its contact below 1e-6 of
  * the speeds (grazing, or coming to rest at the touch), or its time within 1e-9 of t_max. */
 static void test_brute_force(void)
@@ -372,11 +383,11 @@ static void test_brute_force(void)
     double worst = 0, worst_t = 0;
     char msg[200];
     for (i = 0; i < 20000; i++) {
-        double L = ldexp(1.0, rng_int(&s, 41) - 20), far = rng_int(&s, 4) ? 0 : ldexp(1.0, rng_int(&s, 21)) * L;
+        double L = ldexp(1.0, rng_int(&s, 61) - 30), far = rng_int(&s, 4) ? 0 : ldexp(1.0, rng_int(&s, 50)) * L;
         double ox = rng_range(&s, -far, far), oy = rng_range(&s, -far, far);
         cc_circle a = random_circle(&s, L, ox, oy), b = random_circle(&s, L, ox, oy);
-        double da = rng_range(&s, 0, 2) * L * (rng_int(&s, 8) ? 1 : ldexp(1.0, rng_int(&s, 20) - 10));
-        double db = rng_range(&s, 0, 2) * L * (rng_int(&s, 8) ? 1 : ldexp(1.0, rng_int(&s, 20) - 10));
+        double da = rng_range(&s, 0, 2) * L * (rng_int(&s, 8) ? 1 : ldexp(1.0, rng_int(&s, 30) - 15));
+        double db = rng_range(&s, 0, 2) * L * (rng_int(&s, 8) ? 1 : ldexp(1.0, rng_int(&s, 30) - 15));
         double t_max = rng_int(&s, 3) ? rng_range(&s, 0, 12) : HUGE_VAL, vscale;
         cc_contact k = sentinel_contact();
         ref_pair p;
