@@ -178,6 +178,21 @@ static void test_ball_and_wall(void)
     k = before;
     TEST_ASSERT_EQUAL_INT(CC_MISS, cc_sweep_segment_rolling(&c, 0.5, &s, 100, &k));
     TEST_ASSERT_EQUAL_MEMORY(&before, &k, sizeof k);
+    /* coming to rest exactly touching the end point: centre (5, 0.25), v (3, 0), decel 1 stops
+     * after 4.5 at x = 9.5, radius 0.5 from (10, 0.25): no hit. Started d = 1e-9 further on, it
+     * reaches 9.5 when 5 + d + 4.5 - (3 - t)^2 / 2 = 9.5, t = 3 - sqrt(2 d) (the speed there is
+     * 3 - t ~ 4.5e-5: the position's rounding, 1e-15, moves t by ~2e-11); 1e-9 short: no hit. */
+    s.a.y = s.b.y = 0.25;
+    c = circle(5, 0.25, 3, 0, 0.5, 1);
+    TEST_ASSERT_EQUAL_INT(CC_MISS, cc_sweep_segment_rolling(&c, 1.0, &s, 100, &k));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &k, sizeof k);
+    c.pos.x = 5 + 1e-9;
+    TEST_ASSERT_EQUAL_INT(CC_HIT, cc_sweep_segment_rolling(&c, 1.0, &s, 100, &k));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-9, 3 - sqrt(2 * (c.pos.x - 5)), k.t);
+    k = before;
+    c.pos.x = 5 - 1e-9;
+    TEST_ASSERT_EQUAL_INT(CC_MISS, cc_sweep_segment_rolling(&c, 1.0, &s, 100, &k));
+    TEST_ASSERT_EQUAL_MEMORY(&before, &k, sizeof k);
 }
 
 /* A random circle for the random tests: positions in a box of side 10 * L (shifted by up to
