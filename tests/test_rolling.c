@@ -492,6 +492,114 @@ static void test_brute_force(void)
     TEST_ASSERT_TRUE(band <= 20);
 }
 
+/* The same for a rolling circle and a wall: 10,000 random pairs (scales 2^-30 .. 2^30, a quarter
+ * of the walls points, a sixth of the circles aimed to stop about r from an end point), against
+ * the distance from the centre to the segment in long double, sampled and bisected. */
+static long double ref_seg_f(const ref_motion *m, const cc_segment *w, long double r, long double t)
+{
+    long double g = ref_g(m, t), px = m->px + m->vx * g, py = m->py + m->vy * g;
+    long double ux = (long double)w->b.x - w->a.x, uy = (long double)w->b.y - w->a.y;
+    long double qx = px - w->a.x, qy = py - w->a.y, uu = ux * ux + uy * uy, l = uu > 0 ? (qx * ux + qy * uy) / uu : 0;
+    l = l < 0 ? 0 : l > 1 ? 1 : l;
+    qx -= l * ux, qy -= l * uy;
+    return qx * qx + qy * qy - r * r;
+}
+
+static void test_brute_force_wall(void)
+{
+    uint64_t s = 4242;
+    int i, j, hits = 0, misses = 0, overlaps = 0, band = 0;
+    double worst = 0;
+    char msg[200];
+    for (i = 0; i < 10000; i++) {
+        double L = ldexp(1.0, rng_int(&s, 61) - 30), decel = rng_range(&s, 0.01, 2) * L;
+        cc_circle c = random_circle(&s, L, 0, 0), e = random_circle(&s, L, 0, 0);
+        cc_segment w = segment(e.pos.x, e.pos.y, rng_int(&s, 4) ? e.pos.x + e.vel.x : e.pos.x,
+                               rng_int(&s, 4) ? e.pos.y + e.vel.y : e.pos.y);
+        double t_max = rng_int(&s, 3) ? rng_range(&s, 0, 12) : HUGE_VAL, sp;
+        cc_contact k = sentinel_contact();
+        ref_motion m;
+        long double horizon, lo = 0, tr = -1, app;
+        int r, n = 4000;
+        aim(&s, &c, &e, L);
+        sp = sqrt(c.vel.x * c.vel.x + c.vel.y * c.vel.y);
+        if (rng_int(&s, 6) == 0 && sp > 0) { /* the end point a about r from where it stops */
+            double g = sp / (2 * decel), th = rng_range(&s, -1, 1);
+            double rr = c.radius * (1 + (rng_int(&s, 2) ? 1 : -1) * ldexp(1.0, -rng_int(&s, 45) - 5));
+            double ux = c.vel.x / sp, uy = c.vel.y / sp;
+            w.a = vec(c.pos.x + ux * g + (ux * cos(th) - uy * sin(th)) * rr,
+                      c.pos.y + uy * g + (ux * sin(th) + uy * cos(th)) * rr);
+            w.b = vec(w.a.x + (ux * cos(th) - uy * sin(th)) * L, w.a.y + (ux * sin(th) + uy * cos(th)) * L);
+        }
+        r = cc_sweep_segment_rolling(&c, decel, &w, t_max, &k);
+        TEST_ASSERT_TRUE(r == CC_HIT || r == CC_MISS || r == CC_OVERLAP);
+        if (r == CC_OVERLAP) {
+            overlaps++;
+            continue;
+        }
+        m = ref_of(&c, decel);
+        horizon = m.ts >= 0 && m.ts < t_max ? m.ts : t_max;
+        if (!(horizon < HUGE_VAL))
+            continue; /* (at rest: cc_sweep_segment's case) */
+        for (j = 1; j <= n; j++) {
+            long double t = horizon * j / n;
+            if (ref_seg_f(&m, &w, c.radius, t) < 0) {
+                long double a = lo, b = t;
+                while (b - a > 0) {
+                    long double mid = a + (b - a) / 2;
+                    if (mid <= a || mid >= b)
+                        break;
+                    if (ref_seg_f(&m, &w, c.radius, mid) < 0)
+                        b = mid;
+                    else
+                        a = mid;
+                }
+                tr = b;
+                break;
+            }
+            lo = t;
+        }
+        /* the approach speed at the reference's contact: the rate at which sqrt(f + r^2) falls */
+        app = 0;
+        if (tr >= 0) {
+            long double h = tr * 1e-9L + 1e-30L, f0 = ref_seg_f(&m, &w, c.radius, tr - h), f1 = ref_seg_f(&m, &w, c.radius, tr);
+            app = (f0 - f1) / h / (2 * c.radius);
+        }
+        if ((r == CC_HIT) != (tr >= 0)) {
+            int in_band = (tr >= 0 && app < 1e-6 * sp) || (tr >= 0 && fabsl(tr - t_max) <= 1e-9 * t_max);
+            if (tr < 0) {
+                long double f = ref_seg_f(&m, &w, c.radius, k.t);
+                in_band = fabsl(f) <= 1e-9L * c.radius * c.radius;
+            }
+            if (!in_band) {
+                snprintf(msg, sizeof msg, "wall case %d: library %d at %.17g, reference %.17Lg (approach %Lg of %g)", i,
+                         r, r == CC_HIT ? k.t : -1.0, tr, app, sp);
+                TEST_FAIL_MESSAGE(msg);
+            }
+            band++;
+            continue;
+        }
+        if (r == CC_HIT) {
+            double err = (double)(fabsl(k.t - tr) / (tr > 1e-3L ? tr : 1e-3L));
+            hits++;
+            if (!(err <= 1e-12 + 1e-14 * sp / (double)(app > 0 ? app : 1e-300))) {
+                snprintf(msg, sizeof msg, "wall case %d: t %.17g, reference %.17Lg (error %g, approach %Lg of %g)", i, k.t,
+                         tr, err, app, sp);
+                TEST_FAIL_MESSAGE(msg);
+            }
+            if (err > worst)
+                worst = err;
+        } else {
+            misses++;
+        }
+    }
+    printf("brute force, walls: 10000 pairs, %d hits, %d misses, %d overlaps at the start, %d disagreements in the "
+           "rounding band; worst relative time error %.3g\n",
+           hits, misses, overlaps, band, worst);
+    TEST_ASSERT_TRUE(hits > 1000 && misses > 1000);
+    TEST_ASSERT_TRUE(band <= 20);
+}
+
 /* The float twins against double on the float-rounded inputs: hit or miss the same except in the
  * band (the double time near t_max, or a grazing contact), times within a float tolerance. */
 static void test_float_agrees(void)
@@ -566,6 +674,7 @@ int main(void)
     RUN_TEST(test_decel_zero_is_cc_sweep);
     RUN_TEST(test_invalid_inputs);
     RUN_TEST(test_brute_force);
+    RUN_TEST(test_brute_force_wall);
     RUN_TEST(test_float_agrees);
     return UNITY_END();
 }
