@@ -176,15 +176,16 @@ CC_API cc_vec2 cc_closest_point_on_segment(cc_vec2 p, const cc_segment *s);
  * cc_sweep_rolling: the first contact of two rolling circles, with cc_sweep's codes, contact
  * (normal a -> b, point at distance ra from a's centre at time t, depth 0) and untouched-output
  * rules. A hit is the earliest t in [0, t_max] at which the distance equals ra + rb while it
- * decreases: two circles that come to rest exactly touching do not hit. When neither circle
- * rolls (both decels 0, or at rest), the answer is cc_sweep's, bit for bit. While both move the
+ * decreases: two circles that come to rest exactly touching do not hit (when their motion ends
+ * within the rounding of the lengths of a touch, the rest positions decide). When neither circle
+ * rolls (both decels 0, or at rest), the answer is cc_sweep's, bit for bit. While both move, the
  * distance is a quartic in t: its roots are isolated through its derivatives and bisected to the
  * last bit, each piece of motion (between stops) evaluated in the relative frame. */
 CC_API int cc_sweep_rolling(const cc_circle *a, double decel_a, const cc_circle *b, double decel_b, double t_max,
                             cc_contact *out);
 
 /* The same for a rolling circle against a static segment (cc_sweep_segment's rules and normal;
- * decel = 0 or a circle at rest gives its bits). */
+ * decel = 0 or a circle at rest gives its bits; a circle coming to rest touching it does not hit). */
 CC_API int cc_sweep_segment_rolling(const cc_circle *c, double decel, const cc_segment *s, double t_max,
                                     cc_contact *out);
 
