@@ -164,6 +164,36 @@ CC_API int cc_respond_segment(cc_circle *c, const cc_contact *contact, double re
  * or s holds NaN, and (0, 0) when s is NULL: a pure geometric helper with no error channel. */
 CC_API cc_vec2 cc_closest_point_on_segment(cc_vec2 p, const cc_segment *s);
 
+/* ---- Rolling to rest (1.1): exact motion with constant deceleration ------------------------- */
+
+/* A rolling circle with velocity v (speed s = |v| > 0) and deceleration decel >= 0 (length per
+ * time^2) slows along its direction of motion until it stops at t_stop = s / decel:
+ *     p(t) = pos + v (t - decel t^2 / (2 s))   for 0 <= t <= t_stop, velocity v (1 - t / t_stop)
+ *     p(t) = pos + v t_stop / 2                 for t >= t_stop (at rest)
+ * decel = 0, or a circle at rest, is the straight motion of cc_sweep. decel must be finite and
+ * >= 0 (else CC_ERR_INVALID); everything else is validated as by cc_sweep.
+ *
+ * cc_sweep_rolling: the first contact of two rolling circles, with cc_sweep's codes, contact
+ * (normal a -> b, point at distance ra from a's centre at time t, depth 0) and untouched-output
+ * rules. A hit is the earliest t in [0, t_max] at which the distance equals ra + rb while it
+ * decreases: two circles that come to rest exactly touching do not hit (when their motion ends
+ * within the rounding of the lengths of a touch, the rest positions decide). When neither circle
+ * rolls (both decels 0, or at rest), the answer is cc_sweep's, bit for bit. While both move, the
+ * distance is a quartic in t: its roots are isolated through its derivatives and bisected to the
+ * last bit, each piece of motion (between stops) evaluated in the relative frame. */
+CC_API int cc_sweep_rolling(const cc_circle *a, double decel_a, const cc_circle *b, double decel_b, double t_max,
+                            cc_contact *out);
+
+/* The same for a rolling circle against a static segment (cc_sweep_segment's rules and normal;
+ * decel = 0 or a circle at rest gives its bits; a circle coming to rest touching it does not hit). */
+CC_API int cc_sweep_segment_rolling(const cc_circle *c, double decel, const cc_segment *s, double t_max,
+                                    cc_contact *out);
+
+/* Moves c to time t >= 0 (finite) along its rolling motion: position as above, velocity
+ * v (1 - t / t_stop), exactly 0 from the stop on. Returns CC_OK; CC_ERR_INVALID (c untouched)
+ * for invalid input or a position beyond the representable plane. */
+CC_API int cc_rolling_advance(cc_circle *c, double decel, double t);
+
 /* ---- Batch sweep (structure of arrays, for vector units and bindings) ----------------------- */
 
 /* Columns of n circles: positions, velocities and radii (masses are not needed to sweep). */
@@ -628,6 +658,11 @@ CC_API int cc_sweep_segmentf(const cc_circlef *c, const cc_segmentf *s, float t_
 CC_API int cc_respondf(cc_circlef *a, cc_circlef *b, const cc_contactf *contact, float restitution);
 CC_API int cc_respond_segmentf(cc_circlef *c, const cc_contactf *contact, float restitution);
 CC_API cc_vec2f cc_closest_point_on_segmentf(cc_vec2f p, const cc_segmentf *s);
+CC_API int cc_sweep_rollingf(const cc_circlef *a, float decel_a, const cc_circlef *b, float decel_b, float t_max,
+                             cc_contactf *out);
+CC_API int cc_sweep_segment_rollingf(const cc_circlef *c, float decel, const cc_segmentf *s, float t_max,
+                                     cc_contactf *out);
+CC_API int cc_rolling_advancef(cc_circlef *c, float decel, float t);
 
 #ifdef __cplusplus
 }

@@ -6,6 +6,8 @@ foreach(_t sweep sweep_segment detect respond segment invalid properties)
   cc_add_test(NAME test_${_t}_float SOURCES test_${_t}.c LABELS core TIMEOUT 120)
   target_compile_definitions(test_${_t}_float PRIVATE TEST_FLOAT)
 endforeach()
+# rolling to rest: double and float twins in one suite (the brute force compares against long double)
+cc_add_test(NAME test_rolling SOURCES test_rolling.c LABELS core TIMEOUT 300)
 # the version is what the loaded library says: check it against the shared one
 cc_add_test(NAME test_version SOURCES test_version.c LABELS core SHARED)
 
