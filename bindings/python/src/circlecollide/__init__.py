@@ -27,9 +27,12 @@ from ._pair import (
     detect_static,
     respond,
     respond_segment,
+    rolling_advance,
     separate,
     sweep,
+    sweep_rolling,
     sweep_segment,
+    sweep_segment_rolling,
 )
 from ._batch import sweep_many
 from ._world import CastHit, CircleProps, ContactEvent, SegmentProps, SensorEvent, World, WorldStats
@@ -67,8 +70,11 @@ __all__ = [
     "library_version",
     "respond",
     "respond_segment",
+    "rolling_advance",
     "separate",
     "sweep",
     "sweep_many",
+    "sweep_rolling",
     "sweep_segment",
+    "sweep_segment_rolling",
 ]

@@ -64,6 +64,44 @@ def sweep_segment(
     return None if code == _lib.MISS else contact_from_c(code, out)
 
 
+def sweep_rolling(
+    a: Circle, decel_a: float, b: Circle, decel_b: float, t_max: float = math.inf, *, precision: Precision = "double"
+) -> Optional[Contact]:
+    """First contact of two circles that slow down along their motion at constant decelerations.
+
+    A circle moving at v (speed s) with deceleration decel is at pos + v (t - decel t^2 / (2 s))
+    until it stops at t = s / decel, then at rest. decel = 0 is ``sweep`` (the same bits). Two
+    circles that come to rest exactly touching do not hit.
+    """
+    ca, cb, out = circle_to_c(a, precision), circle_to_c(b, precision), _contact_struct(precision)
+    fn = _f(precision, "cc_sweep_rolling")
+    code = check(fn(byref(ca), float(decel_a), byref(cb), float(decel_b), float(t_max), byref(out)), "sweep_rolling")
+    return None if code == _lib.MISS else contact_from_c(code, out)
+
+
+def sweep_segment_rolling(
+    c: Circle,
+    decel: float,
+    a: Iterable[float],
+    b: Iterable[float],
+    t_max: float = math.inf,
+    *,
+    precision: Precision = "double",
+) -> Optional[Contact]:
+    """First contact of a decelerating circle with the static segment from a to b."""
+    cc, seg, out = circle_to_c(c, precision), _segment(a, b, precision), _contact_struct(precision)
+    fn = _f(precision, "cc_sweep_segment_rolling")
+    code = check(fn(byref(cc), float(decel), byref(seg), float(t_max), byref(out)), "sweep_segment_rolling")
+    return None if code == _lib.MISS else contact_from_c(code, out)
+
+
+def rolling_advance(c: Circle, decel: float, t: float, *, precision: Precision = "double") -> None:
+    """Moves c (in place) to time t >= 0 along its decelerating motion (at rest after its stop)."""
+    cc = circle_to_c(c, precision)
+    check(_f(precision, "cc_rolling_advance")(byref(cc), float(decel), float(t)), "rolling_advance")
+    store_circle(c, cc)
+
+
 def detect_static(a: Circle, b: Circle, *, precision: Precision = "double") -> Optional[Contact]:
     """The overlap of a and b at t = 0 (touching is not overlapping), or None."""
     ca, cb, out = circle_to_c(a, precision), circle_to_c(b, precision), _contact_struct(precision)

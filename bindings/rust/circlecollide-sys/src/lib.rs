@@ -231,6 +231,9 @@ extern "C" {
     pub fn cc_respond_segment(c: *mut cc_circle, contact: *const cc_contact, restitution: f64) -> c_int;
     pub fn cc_closest_point_on_segment(p: cc_vec2, s: *const cc_segment) -> cc_vec2;
     pub fn cc_sweep_many(n: usize, a: *const cc_circle_soa, b: *const cc_circle_soa, t_max: f64, t_out: *mut f64, result_out: *mut c_int) -> c_long;
+    pub fn cc_sweep_rolling(a: *const cc_circle, decel_a: f64, b: *const cc_circle, decel_b: f64, t_max: f64, out: *mut cc_contact) -> c_int;
+    pub fn cc_sweep_segment_rolling(c: *const cc_circle, decel: f64, s: *const cc_segment, t_max: f64, out: *mut cc_contact) -> c_int;
+    pub fn cc_rolling_advance(c: *mut cc_circle, decel: f64, t: f64) -> c_int;
 
     pub fn cc_detect_staticf(a: *const cc_circlef, b: *const cc_circlef, out: *mut cc_contactf) -> c_int;
     pub fn cc_separatef(a: *mut cc_circlef, b: *mut cc_circlef) -> c_int;
@@ -239,6 +242,9 @@ extern "C" {
     pub fn cc_respondf(a: *mut cc_circlef, b: *mut cc_circlef, contact: *const cc_contactf, restitution: f32) -> c_int;
     pub fn cc_respond_segmentf(c: *mut cc_circlef, contact: *const cc_contactf, restitution: f32) -> c_int;
     pub fn cc_closest_point_on_segmentf(p: cc_vec2f, s: *const cc_segmentf) -> cc_vec2f;
+    pub fn cc_sweep_rollingf(a: *const cc_circlef, decel_a: f32, b: *const cc_circlef, decel_b: f32, t_max: f32, out: *mut cc_contactf) -> c_int;
+    pub fn cc_sweep_segment_rollingf(c: *const cc_circlef, decel: f32, s: *const cc_segmentf, t_max: f32, out: *mut cc_contactf) -> c_int;
+    pub fn cc_rolling_advancef(c: *mut cc_circlef, decel: f32, t: f32) -> c_int;
 }
 
 // The world's functions: declared only when the library built here contains them (the build
