@@ -470,7 +470,7 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  *         isolated and bisected to the last bit); a circle comes to rest at its exact stop time
  *         and costs nothing from then on until something hits it. Two circles that come to rest
  *         exactly touching do not collide. Pairs of which neither decelerates cost what they
- *         cost without friction; a decelerating pair costs about 30 times a straight one
+ *         cost without friction; a decelerating pair costs 10 to 30 times a straight one
  *         (docs/BENCHMARKS.md, bench_world features).
  * SWEPT, DISCRETE  Move and sweep along the same paths, at the end of each step as before.
  * Pushing  1.1 has no carried contacts: a circle pushed by one that decelerates less along their
