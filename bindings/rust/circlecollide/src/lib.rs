@@ -302,10 +302,17 @@ pub trait Real:
     unsafe fn c_respond_segment(c: *mut Circle<Self>, k: *const RawContact<Self>, e: Self) -> c_int;
     #[doc(hidden)]
     unsafe fn c_closest_point(p: Vec2<Self>, s: *const Segment<Self>) -> Vec2<Self>;
+    #[doc(hidden)]
+    unsafe fn c_sweep_rolling(a: *const Circle<Self>, da: Self, b: *const Circle<Self>, db: Self, t_max: Self, out: *mut RawContact<Self>) -> c_int;
+    #[doc(hidden)]
+    unsafe fn c_sweep_segment_rolling(c: *const Circle<Self>, d: Self, s: *const Segment<Self>, t_max: Self, out: *mut RawContact<Self>) -> c_int;
+    #[doc(hidden)]
+    unsafe fn c_rolling_advance(c: *mut Circle<Self>, d: Self, t: Self) -> c_int;
 }
 
 macro_rules! impl_real {
-    ($t:ty, $vec:ident, $detect:ident, $separate:ident, $sweep:ident, $sweep_seg:ident, $respond:ident, $respond_seg:ident, $closest:ident) => {
+    ($t:ty, $vec:ident, $detect:ident, $separate:ident, $sweep:ident, $sweep_seg:ident, $respond:ident, $respond_seg:ident, $closest:ident,
+     $sweep_roll:ident, $sweep_seg_roll:ident, $advance:ident) => {
         impl Real for $t {
             const ONE: Self = 1.0;
             const INFINITY: Self = <$t>::INFINITY;
@@ -331,11 +338,22 @@ macro_rules! impl_real {
                 let r = sys::$closest(sys::$vec { x: p.x, y: p.y }, s.cast());
                 Vec2::new(r.x, r.y)
             }
+            unsafe fn c_sweep_rolling(a: *const Circle<Self>, da: Self, b: *const Circle<Self>, db: Self, t_max: Self, out: *mut RawContact<Self>) -> c_int {
+                sys::$sweep_roll(a.cast(), da, b.cast(), db, t_max, out.cast())
+            }
+            unsafe fn c_sweep_segment_rolling(c: *const Circle<Self>, d: Self, s: *const Segment<Self>, t_max: Self, out: *mut RawContact<Self>) -> c_int {
+                sys::$sweep_seg_roll(c.cast(), d, s.cast(), t_max, out.cast())
+            }
+            unsafe fn c_rolling_advance(c: *mut Circle<Self>, d: Self, t: Self) -> c_int {
+                sys::$advance(c.cast(), d, t)
+            }
         }
     };
 }
-impl_real!(f64, cc_vec2, cc_detect_static, cc_separate, cc_sweep, cc_sweep_segment, cc_respond, cc_respond_segment, cc_closest_point_on_segment);
-impl_real!(f32, cc_vec2f, cc_detect_staticf, cc_separatef, cc_sweepf, cc_sweep_segmentf, cc_respondf, cc_respond_segmentf, cc_closest_point_on_segmentf);
+impl_real!(f64, cc_vec2, cc_detect_static, cc_separate, cc_sweep, cc_sweep_segment, cc_respond, cc_respond_segment, cc_closest_point_on_segment,
+           cc_sweep_rolling, cc_sweep_segment_rolling, cc_rolling_advance);
+impl_real!(f32, cc_vec2f, cc_detect_staticf, cc_separatef, cc_sweepf, cc_sweep_segmentf, cc_respondf, cc_respond_segmentf, cc_closest_point_on_segmentf,
+           cc_sweep_rollingf, cc_sweep_segment_rollingf, cc_rolling_advancef);
 
 // ---- pair functions ----------------------------------------------------------------------
 
@@ -353,6 +371,32 @@ pub fn sweep_segment<T: Real>(c: &Circle<T>, s: &Segment<T>, t_max: T) -> Result
     let mut out = RawContact::default();
     let code = check(unsafe { T::c_sweep_segment(c, s, t_max, &mut out) })?;
     Ok(out.into_contact(code))
+}
+
+/// First contact of two circles that slow down along their motion at constant decelerations
+/// `decel_a`, `decel_b` (>= 0): a circle moving at v (speed s) is at pos + v (t - decel t^2 / (2s))
+/// until it stops at s / decel. Zero decelerations give `sweep`'s answer bit for bit; two circles
+/// that come to rest exactly touching do not hit.
+pub fn sweep_rolling<T: Real>(a: &Circle<T>, decel_a: T, b: &Circle<T>, decel_b: T, t_max: T) -> Result<Option<Contact<T>>> {
+    let mut out = RawContact::default();
+    // SAFETY: pointers to live values of the C layout; out is written only on a hit.
+    let code = check(unsafe { T::c_sweep_rolling(a, decel_a, b, decel_b, t_max, &mut out) })?;
+    Ok(out.into_contact(code))
+}
+
+/// First contact of a decelerating circle with a static segment.
+pub fn sweep_segment_rolling<T: Real>(c: &Circle<T>, decel: T, s: &Segment<T>, t_max: T) -> Result<Option<Contact<T>>> {
+    let mut out = RawContact::default();
+    // SAFETY: as in sweep_rolling.
+    let code = check(unsafe { T::c_sweep_segment_rolling(c, decel, s, t_max, &mut out) })?;
+    Ok(out.into_contact(code))
+}
+
+/// Moves `c` to time `t >= 0` along its decelerating motion (at rest after its stop).
+pub fn rolling_advance<T: Real>(c: &mut Circle<T>, decel: T, t: T) -> Result<()> {
+    // SAFETY: a live circle of the C layout, changed only on success.
+    check(unsafe { T::c_rolling_advance(c, decel, t) })?;
+    Ok(())
 }
 
 /// The overlap of a and b at t = 0 (touching is not overlapping), or `None`.
