@@ -31,14 +31,16 @@ void demo_print_usage(FILE *f)
         "                 gas         thousands of circles in a box, one heavy one among them\n"
         "                 tunnel      fast bullets in a box in EXACT, SWEPT and DISCRETE mode\n"
         "                             side by side: who stays in, who tunnels out\n"
+        "                 hard-disks  1040 disks in a periodic box at area fraction 0.70,\n"
+        "                             with their pressure from the virial\n"
         "  --frames N     number of frames to write, 1 to %ld\n"
         "  --out DIR      output folder\n"
         "  --size WxH     frame size in pixels, each side %d to %d (default 640x360)\n"
         "  --fps F        frames per second of simulated time, (0, %g] (default 60)\n"
         "  --mode M       exact | swept | discrete: the world's mode (default exact;\n"
         "                 the tunnel scene always shows all three)\n"
-        "  --seed S       seed of the random starts of gas and air-hockey, an unsigned\n"
-        "                 integer (default 1)\n"
+        "  --seed S       seed of the random starts of gas, air-hockey and hard-disks,\n"
+        "                 an unsigned integer (default 1)\n"
         "  --help         this text\n"
         "\n"
         "Progress goes to stderr, then a summary: collisions, energy drift, wall time.\n"
@@ -169,7 +171,8 @@ int demo_parse_args(int argc, char **argv, demo_options *o, char *err, size_t er
         if (strcmp(opt, "--scene") == 0) {
             if (demo_find_scene(val) == NULL)
                 return fail(err, err_size,
-                            "unknown scene '%s' (choose pool, air-hockey, cradle, gas or tunnel)",
+                            "unknown scene '%s' (choose pool, air-hockey, cradle, gas, tunnel "
+                            "or hard-disks)",
                             val);
             o->scene = val;
         } else if (strcmp(opt, "--frames") == 0) {
@@ -199,7 +202,8 @@ int demo_parse_args(int argc, char **argv, demo_options *o, char *err, size_t er
         }
     }
     if (o->scene == NULL)
-        return fail(err, err_size, "missing --scene (pool, air-hockey, cradle, gas or tunnel)");
+        return fail(err, err_size,
+                    "missing --scene (pool, air-hockey, cradle, gas, tunnel or hard-disks)");
     if (!have_frames)
         return fail(err, err_size, "missing --frames N");
     if (o->out == NULL)

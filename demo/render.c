@@ -90,6 +90,52 @@ static void draw_body(demo_canvas *c, const demo_stage *s, const demo_view *v, i
         demo_canvas_ring(c, x, y, r - 0.5, 0.5, dark, 0.6, DEMO_OVER);
 }
 
+/* A periodic box: positions are in [0, period), and a circle within a radius of a wrapped edge
+ * is painted there and at its image beyond the opposite edge (both, or all four near a corner),
+ * inside the box's pixel rectangle only. */
+static void draw_periodic_bodies(demo_canvas *c, const demo_stage *s, const demo_view *v)
+{
+    const double px = s->period.x, py = s->period.y;
+    int was_clipped = c->clipped, cx0 = c->cx0, cy0 = c->cy0, cx1 = c->cx1, cy1 = c->cy1;
+    int bx0 = 0, by0 = 0, bx1 = c->w, by1 = c->h, i;
+    if (px > 0.0) {
+        bx0 = (int)floor(demo_view_x(v, 0.0) + 0.5);
+        bx1 = (int)floor(demo_view_x(v, px) + 0.5);
+    }
+    if (py > 0.0) {
+        by0 = (int)floor(demo_view_y(v, py) + 0.5);
+        by1 = (int)floor(demo_view_y(v, 0.0) + 0.5);
+    }
+    if (was_clipped) { /* inside the stage's column too */
+        bx0 = bx0 > cx0 ? bx0 : cx0;
+        by0 = by0 > cy0 ? by0 : cy0;
+        bx1 = bx1 < cx1 ? bx1 : cx1;
+        by1 = by1 < cy1 ? by1 : cy1;
+    }
+    demo_canvas_clip(c, bx0, by0, bx1, by1);
+    for (i = 0; i < s->count; ++i) {
+        const cc_circle *b = &s->circles[i];
+        int ix, iy;
+        for (iy = -1; iy <= 1; ++iy)
+            for (ix = -1; ix <= 1; ++ix) {
+                cc_circle img = *b;
+                if ((ix != 0 && !(px > 0.0)) || (iy != 0 && !(py > 0.0)))
+                    continue;
+                img.pos.x += ix * px;
+                img.pos.y += iy * py;
+                /* only images that reach into the box */
+                if ((px > 0.0 && (img.pos.x + img.radius <= 0.0 || img.pos.x - img.radius >= px)) ||
+                    (py > 0.0 && (img.pos.y + img.radius <= 0.0 || img.pos.y - img.radius >= py)))
+                    continue;
+                draw_body(c, s, v, s->ids[i], &img);
+            }
+    }
+    if (was_clipped)
+        demo_canvas_clip(c, cx0, cy0, cx1, cy1);
+    else
+        demo_canvas_unclip(c);
+}
+
 static void draw_flashes(demo_canvas *c, const demo_stage *s, const demo_view *v, double now)
 {
     int k;
@@ -129,8 +175,11 @@ void demo_render_stage(demo_canvas *c, const demo_stage *s, const demo_view *v, 
         demo_canvas_capsule(c, demo_view_x(v, s->walls[i].a.x), demo_view_y(v, s->walls[i].a.y),
                             demo_view_x(v, s->walls[i].b.x), demo_view_y(v, s->walls[i].b.y), hw,
                             wall, 1.0, DEMO_OVER);
-    for (i = 0; i < s->count; ++i)
-        draw_body(c, s, v, s->ids[i], &s->circles[i]);
+    if (s->period.x > 0.0 || s->period.y > 0.0)
+        draw_periodic_bodies(c, s, v);
+    else
+        for (i = 0; i < s->count; ++i)
+            draw_body(c, s, v, s->ids[i], &s->circles[i]);
     if (s->def.flash_time > 0.0)
         draw_flashes(c, s, v, now);
 }

@@ -44,5 +44,6 @@ int demo_scene_air_hockey(demo_show *show);
 int demo_scene_cradle(demo_show *show);
 int demo_scene_gas(demo_show *show);
 int demo_scene_tunnel(demo_show *show);
+int demo_scene_hard_disks(demo_show *show);
 
 #endif

@@ -7,7 +7,7 @@
 static const demo_scene scenes[] = {
     {"pool", demo_scene_pool},         {"air-hockey", demo_scene_air_hockey},
     {"cradle", demo_scene_cradle},     {"gas", demo_scene_gas},
-    {"tunnel", demo_scene_tunnel},
+    {"tunnel", demo_scene_tunnel},     {"hard-disks", demo_scene_hard_disks},
 };
 
 const demo_scene *demo_find_scene(const char *name)

@@ -72,12 +72,19 @@ static void on_sensor(const cc_sensor_event *e, void *user)
 
 int demo_stage_init(demo_stage *s, const demo_stage_def *def)
 {
+    return demo_stage_init_periodic(s, def, 0.0, 0.0);
+}
+
+int demo_stage_init_periodic(demo_stage *s, const demo_stage_def *def, double px, double py)
+{
     cc_world_def wd;
     size_t bytes;
     int status = 0;
     size_t n;
     memset(s, 0, sizeof *s);
     s->def = *def;
+    s->period.x = px > 0.0 ? px : 0.0;
+    s->period.y = py > 0.0 ? py : 0.0;
     n = (size_t)def->max_circles;
     cc_world_def_init(&wd);
     wd.max_circles = def->max_circles;
@@ -90,6 +97,7 @@ int demo_stage_init(demo_stage *s, const demo_stage_def *def)
     wd.rolling_decel = def->rolling_decel;
     wd.restitution_mix = def->restitution_mix;
     wd.on_sensor = def->on_sensor != NULL ? on_sensor : NULL;
+    wd.period = s->period;
     bytes = cc_world_size(&wd);
     if (bytes == 0)
         return CC_ERR_INVALID;

@@ -55,6 +55,7 @@ typedef struct demo_stage_def {
 
 typedef struct demo_stage {
     demo_stage_def def;
+    cc_vec2 period; /* the world's cc_world_def.period ((0, 0): open), demo_stage_init_periodic */
     cc_world *world;
     void *memory;
     /* the circles at the last snapshot, in increasing id order */
@@ -83,6 +84,10 @@ typedef struct demo_stage {
 
 /* Creates the world (memory from malloc). 0, or a negative CC_ERR_* / -100 for out of memory. */
 int demo_stage_init(demo_stage *s, const demo_stage_def *def);
+/* The same for a periodic box: the world wraps along x when px > 0 and along y when py > 0
+ * (cc_world_def.period), and the renderer paints a circle that straddles a wrapped edge on both
+ * sides (trails are not wrapped: give such a stage trail_time 0). */
+int demo_stage_init_periodic(demo_stage *s, const demo_stage_def *def, double px, double py);
 void demo_stage_free(demo_stage *s);
 
 /* Adds a circle or a wall; returns the id or a negative error (also recorded in s->error). */
