@@ -46,12 +46,14 @@ endfunction()
 
 # Small frames, and enough simulated time for each scene's first events: the cue ball reaches
 # the rack at 0.2 s, the cradle's balls meet at 0.4 s, the puck reaches a mallet and a rail and
-# enters the first goal (a sensor) before 1.5 s.
+# enters the first goal (a sensor) before 1.5 s. The hard disks (a periodic box, 1040 disks) make
+# about 1600 collisions a frame at 20 fps, and their short caption shows the pressure from frame 1.
 demo_golden(pool --size 160x90 --frames 24 --fps 20)
 demo_golden(air-hockey --size 160x90 --frames 30 --fps 20 --seed 3)
 demo_golden(cradle --size 160x90 --frames 16 --fps 20)
 demo_golden(gas --size 160x90 --frames 4 --fps 20 --seed 7)
 demo_golden(tunnel --size 192x108 --frames 12 --fps 30)
+demo_golden(hard-disks --size 192x108 --frames 6 --fps 20 --seed 2)
 
 # demo_cli(NAME EXIT TEXT args...): cc_demo exits with EXIT and stderr (on success stdout or
 # stderr) contains TEXT.
@@ -66,10 +68,15 @@ endfunction()
 
 set(_ok --scene cradle --frames 1)
 demo_cli(help 0 "usage: cc_demo --scene NAME --frames N --out DIR" --help)
+demo_cli(help_hard_disks 0 "hard-disks  1040 disks in a periodic box" --help)
 demo_cli(mode_swept 0 "SWEPT   : world time 0.500" --scene air-hockey --frames 11 --fps 20
   --size 64x36 --mode swept --out @OUT@)
 demo_cli(mode_discrete 0 "DISCRETE: world time 0.500" --scene pool --frames 11 --fps 20
   --size 64x36 --mode discrete --out @OUT@)
+# the hard disks' summary gives the pressure from the world's virial (about 9 while the lattice
+# melts, 10 once it has: hard disks at area fraction 0.70)
+demo_cli(hard_disks_pressure 0 "pressure Z = PA/(N kT) = 9." --scene hard-disks --frames 11
+  --fps 20 --size 64x36 --out @OUT@)
 demo_cli(no_arguments 2 "cc_demo: missing --scene")
 demo_cli(missing_frames 2 "missing --frames" --scene pool --out @OUT@)
 demo_cli(missing_out 2 "missing --out" --scene pool --frames 2)
