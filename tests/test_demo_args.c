@@ -82,9 +82,9 @@ static void test_every_option_is_read(void)
 
 static void test_every_scene_name_is_known(void)
 {
-    const char *names[5] = {"pool", "air-hockey", "cradle", "gas", "tunnel"};
+    const char *names[6] = {"pool", "air-hockey", "cradle", "gas", "tunnel", "hard-disks"};
     int i;
-    for (i = 0; i < 5; ++i)
+    for (i = 0; i < 6; ++i)
         TEST_ASSERT_EQUAL_INT(DEMO_ARGS_RUN,
                               parse("--scene", names[i], "--frames", "1", "--out", "d", END));
 }
