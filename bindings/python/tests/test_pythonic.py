@@ -322,3 +322,14 @@ def test_every_public_name_has_a_docstring():
 def test_dir_shows_no_leaked_names():
     assert "annotations" not in dir(circlecollide)
     assert set(circlecollide.__all__) <= set(dir(circlecollide))
+
+
+def test_a_world_without_callbacks_says_so_at_assignment():
+    w = World(max_circles=2, callbacks=False)
+    with pytest.raises(ValueError, match="callbacks=False"):
+        w.on_contact = print
+    with pytest.raises(ValueError, match="callbacks=False"):
+        w.on_sensor = print
+    w.on_contact = None  # unsetting is fine
+    with pytest.raises(ValueError, match="callbacks=False"):
+        World(max_circles=2, callbacks=False, on_contact=print)
