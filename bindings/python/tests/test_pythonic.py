@@ -333,3 +333,23 @@ def test_a_world_without_callbacks_says_so_at_assignment():
     w.on_contact = None  # unsetting is fine
     with pytest.raises(ValueError, match="callbacks=False"):
         World(max_circles=2, callbacks=False, on_contact=print)
+
+
+def test_world_queries_and_walls_name_the_argument():
+    w, _, _ = wall_world()
+    with refused(r"cast_circle: radius must be finite and >= 0, got -1"):
+        w.cast_circle((0, 0), (1, 0), -1)
+    with refused(r"cast_circle: d must be finite, got \(nan, 0.0\)"):
+        w.cast_circle((0, 0), (math.nan, 0))
+    with refused(r"query_circle: radius must be finite and >= 0, got inf"):
+        w.query_circle((0, 0), math.inf)
+    with refused(r"query_box: hi must be finite"):
+        w.query_box((0, 0), (math.inf, 1))
+    with refused(r"add_segment: q must be finite"):
+        w.add_segment((0, 0), (math.nan, 1))
+    with refused(r"World: period must be >= 0 \(0: open\), got \(-1.0, 0.0\)"):
+        World(max_circles=1, period=(-1, 0))
+    from circlecollide import sweep_many
+
+    with refused(r"sweep_many: t_max must be >= 0, got -2"):
+        sweep_many([[0, 0]], [[0, 0]], 1, [[3, 0]], [[0, 0]], 1, -2)

@@ -11,7 +11,7 @@ import numpy as np
 
 from . import _errors, _lib
 from ._errors import CircleCollideError, check
-from ._types import Circle, Vec2, circle_from_c, circle_to_c, vec2
+from ._types import Circle, Vec2, circle_from_c, circle_to_c, finite_vec2
 
 L = _lib.lib
 byref = ctypes.byref
@@ -168,7 +168,9 @@ class World:
             d.max_events = int(max_events)
         d.rolling_decel = _errors.nonneg_finite(rolling_decel, "rolling_decel", "World")
         d.restitution_mix = MIXES[restitution_mix]
-        px, py = vec2(period, "period")
+        px, py = finite_vec2(period, "period", "World")
+        if px < 0 or py < 0:
+            raise _errors.invalid("World", f"period must be >= 0 (0: open), got ({_errors.show(px)}, {_errors.show(py)})")
         d.period = _lib.cc_vec2(px, py)
         # a library older than these declarations ignores the fields beyond its def: refuse to
         # drop a setting silently
@@ -284,7 +286,8 @@ class World:
     def add_segment(self, p: Iterable[float], q: Iterable[float]) -> int:
         """Adds a static wall from p to q; returns its id."""
         self._mutating("add_segment")
-        s = _lib.cc_segment(_lib.cc_vec2(*vec2(p, "p")), _lib.cc_vec2(*vec2(q, "q")))
+        pv, qv = finite_vec2(p, "p", "add_segment"), finite_vec2(q, "q", "add_segment")
+        s = _lib.cc_segment(_lib.cc_vec2(*pv), _lib.cc_vec2(*qv))
         return check(L.cc_world_add_segment(self._w, byref(s)), "add_segment")
 
     def remove_circle(self, id: int) -> None:
@@ -440,9 +443,9 @@ class World:
         code = check(
             L.cc_world_cast_circle(
                 self._w,
-                _lib.cc_vec2(*vec2(p, "p")),
-                float(radius),
-                _lib.cc_vec2(*vec2(d, "d")),
+                _lib.cc_vec2(*finite_vec2(p, "p", "cast_circle")),
+                _errors.nonneg_finite(radius, "radius", "cast_circle"),
+                _lib.cc_vec2(*finite_vec2(d, "d", "cast_circle")),
                 _u32(mask, "mask"),
                 byref(out),
             ),
@@ -471,13 +474,15 @@ class World:
     def query_circle(self, c: Iterable[float], radius: float = 0.0, mask: int = ALL_BITS) -> List[int]:
         """Ids (increasing) of the circles overlapping the disc of centre c and ``radius``
         (0: the circles whose interior holds c), whose category meets ``mask``, sensors included."""
-        cv, r, m = _lib.cc_vec2(*vec2(c, "c")), float(radius), _u32(mask, "mask")
+        cv = _lib.cc_vec2(*finite_vec2(c, "c", "query_circle"))
+        r, m = _errors.nonneg_finite(radius, "radius", "query_circle"), _u32(mask, "mask")
         return self._ids_query(lambda ids, cap: L.cc_world_query_circle(self._w, cv, r, m, ids, cap), "query_circle")
 
     def query_box(self, lo: Iterable[float], hi: Iterable[float], mask: int = ALL_BITS) -> List[int]:
         """Ids (increasing) of the circles that meet the closed box [lo, hi] (exactly: a circle
         touching it counts), whose category meets ``mask``, sensors included."""
-        lv, hv, m = _lib.cc_vec2(*vec2(lo, "lo")), _lib.cc_vec2(*vec2(hi, "hi")), _u32(mask, "mask")
+        lv, hv = _lib.cc_vec2(*finite_vec2(lo, "lo", "query_box")), _lib.cc_vec2(*finite_vec2(hi, "hi", "query_box"))
+        m = _u32(mask, "mask")
         return self._ids_query(lambda ids, cap: L.cc_world_query_box(self._w, lv, hv, m, ids, cap), "query_box")
 
     def hash(self) -> int:
