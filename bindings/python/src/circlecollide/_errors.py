@@ -66,6 +66,8 @@ def show(v: Any) -> str:
 
 def number(v: Any, name: str, context: str = "") -> float:
     """v as a float; a value that is not a real number is a TypeError naming the argument."""
+    if type(v) is float:  # the common case, first
+        return v
     if isinstance(v, (str, bytes, complex)):
         raise TypeError(f"{context + ': ' if context else ''}{name} must be a real number, got {v!r}")
     try:

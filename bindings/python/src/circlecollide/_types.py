@@ -20,20 +20,28 @@ class Vec2(NamedTuple):
     y: float
 
 
+_new_tuple = tuple.__new__
+
+
+def _v2(x: float, y: float) -> Vec2:
+    """Vec2(x, y) without NamedTuple.__new__'s argument handling (twice as fast)."""
+    return _new_tuple(Vec2, (x, y))
+
+
 def vec2(v: Iterable[float], name: str = "vector") -> Vec2:
     """(x, y) as a Vec2 of two floats; anything else is a ValueError."""
     if isinstance(v, (str, bytes)):
         raise ValueError(f"{name} must be a pair of numbers (x, y), got {v!r}")
     try:
         x, y = v
-        return Vec2(float(x), float(y))
+        return _v2(float(x), float(y))
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be a pair of numbers (x, y), got {v!r}") from None
 
 
 def finite_vec2(v: Iterable[float], name: str, context: str = "") -> Vec2:
     """A Vec2 whose components are finite, else CC_ERR_INVALID naming the argument."""
-    r = vec2(v, name)
+    r = v if type(v) is Vec2 else vec2(v, name)
     if not (math.isfinite(r.x) and math.isfinite(r.y)):
         raise _errors.invalid(context, f"{name} must be finite, got ({_errors.show(r.x)}, {_errors.show(r.y)})")
     return r
@@ -153,8 +161,10 @@ class Contact:
 
     def __post_init__(self) -> None:
         # a Contact made by hand with plain tuples still has .point.x
-        object.__setattr__(self, "point", vec2(self.point, "point"))
-        object.__setattr__(self, "normal", vec2(self.normal, "normal"))
+        if type(self.point) is not Vec2:
+            object.__setattr__(self, "point", vec2(self.point, "point"))
+        if type(self.normal) is not Vec2:
+            object.__setattr__(self, "normal", vec2(self.normal, "normal"))
 
 
 _pack6d = struct.Struct("=6d").pack  # cc_circle: pos.x, pos.y, vel.x, vel.y, radius, mass
@@ -182,8 +192,8 @@ def circle_from_c(s: AnyCircleStruct) -> Circle:
 def store_circle(dst: Circle, s: AnyCircleStruct) -> None:
     """Writes the C struct's state back into an existing Circle (in-place update)."""
     # the library's outputs are valid circles: written as they are, all four or none raising
-    dst._pos = Vec2(s.pos.x, s.pos.y)
-    dst._vel = Vec2(s.vel.x, s.vel.y)
+    dst._pos = _v2(s.pos.x, s.pos.y)
+    dst._vel = _v2(s.vel.x, s.vel.y)
     dst._radius = s.radius
     dst._mass = s.mass
 
@@ -193,8 +203,8 @@ def contact_from_c(code: int, s: Union[_lib.cc_contact, _lib.cc_contactf]) -> Co
     return Contact(
         "hit" if code == _lib.HIT else "overlap",
         s.t,
-        Vec2(s.point.x, s.point.y),
-        Vec2(s.normal.x, s.normal.y),
+        _v2(s.point.x, s.point.y),
+        _v2(s.normal.x, s.normal.y),
         s.depth,
     )
 
