@@ -96,8 +96,8 @@ def test_an_exception_in_on_sensor_is_raised_by_the_call_that_fired_it():
         w.add_circle(Circle((10, 0.5), (0, 0), 0.5))
     w.on_sensor = None
     w.add_circle(Circle((10, -0.5), (0, 0), 0.25))
-    with pytest.raises(ValueError, match="on_sensor"):
-        World(max_circles=1).on_sensor = print
+    with pytest.raises(TypeError, match="on_sensor must be callable"):
+        World(max_circles=1).on_sensor = 3
 
 
 def test_at_most_max_sensors():

@@ -16,7 +16,6 @@ Each takes ``precision="float"`` to run the single-precision C functions instead
 ``World`` simulates many circles and walls; ``sweep_many`` sweeps numpy columns of pairs.
 """
 
-from __future__ import annotations
 
 from ._lib import EXPECTED_MAJOR, LibraryVersionError
 from ._lib import lib as _clib

@@ -10,6 +10,7 @@ import numpy as np
 import numpy.typing as npt
 
 from . import _lib
+from . import _errors
 from ._errors import check
 
 ArrayLike = npt.ArrayLike
@@ -71,7 +72,9 @@ def sweep_many(
     codes_ptr = codes.ctypes.data_as(ctypes.POINTER(ctypes.c_int)) if codes is not None else None
     # also for n == 0, so that t_max is validated the same way
     check(
-        _lib.lib.cc_sweep_many(n, ctypes.byref(soa_a), ctypes.byref(soa_b), float(t_max), _ptr(t), codes_ptr),
+        _lib.lib.cc_sweep_many(
+            n, ctypes.byref(soa_a), ctypes.byref(soa_b), _errors.t_max(t_max, context="sweep_many"), _ptr(t), codes_ptr
+        ),
         "sweep_many",
     )
     return (t, codes) if codes is not None else t

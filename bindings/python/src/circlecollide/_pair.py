@@ -12,6 +12,7 @@ import math
 from typing import Any, Iterable, Optional
 
 from . import _lib
+from . import _errors
 from ._errors import check
 from ._types import (
     Circle,
@@ -51,7 +52,7 @@ def sweep(a: Circle, b: Circle, t_max: float = math.inf, *, precision: Precision
     (already overlapping at t = 0), or ``None`` when they do not touch by t_max.
     """
     ca, cb, out = circle_to_c(a, precision), circle_to_c(b, precision), _contact_struct(precision)
-    code = check(_f(precision, "cc_sweep")(byref(ca), byref(cb), float(t_max), byref(out)), "sweep")
+    code = check(_f(precision, "cc_sweep")(byref(ca), byref(cb), _errors.t_max(t_max, context="sweep"), byref(out)), "sweep")
     return None if code == _lib.MISS else contact_from_c(code, out)
 
 
@@ -60,7 +61,7 @@ def sweep_segment(
 ) -> Optional[Contact]:
     """First contact of a moving circle with the static segment from a to b (a == b: a point)."""
     cc, seg, out = circle_to_c(c, precision), _segment(a, b, precision), _contact_struct(precision)
-    code = check(_f(precision, "cc_sweep_segment")(byref(cc), byref(seg), float(t_max), byref(out)), "sweep_segment")
+    code = check(_f(precision, "cc_sweep_segment")(byref(cc), byref(seg), _errors.t_max(t_max, context="sweep_segment"), byref(out)), "sweep_segment")
     return None if code == _lib.MISS else contact_from_c(code, out)
 
 
@@ -75,7 +76,9 @@ def sweep_rolling(
     """
     ca, cb, out = circle_to_c(a, precision), circle_to_c(b, precision), _contact_struct(precision)
     fn = _f(precision, "cc_sweep_rolling")
-    code = check(fn(byref(ca), float(decel_a), byref(cb), float(decel_b), float(t_max), byref(out)), "sweep_rolling")
+    ctx = "sweep_rolling"
+    da, db = _errors.nonneg_finite(decel_a, "decel_a", ctx), _errors.nonneg_finite(decel_b, "decel_b", ctx)
+    code = check(fn(byref(ca), da, byref(cb), db, _errors.t_max(t_max, context=ctx), byref(out)), ctx)
     return None if code == _lib.MISS else contact_from_c(code, out)
 
 
@@ -91,14 +94,18 @@ def sweep_segment_rolling(
     """First contact of a decelerating circle with the static segment from a to b."""
     cc, seg, out = circle_to_c(c, precision), _segment(a, b, precision), _contact_struct(precision)
     fn = _f(precision, "cc_sweep_segment_rolling")
-    code = check(fn(byref(cc), float(decel), byref(seg), float(t_max), byref(out)), "sweep_segment_rolling")
+    ctx = "sweep_segment_rolling"
+    d, tm = _errors.nonneg_finite(decel, "decel", ctx), _errors.t_max(t_max, context=ctx)
+    code = check(fn(byref(cc), d, byref(seg), tm, byref(out)), ctx)
     return None if code == _lib.MISS else contact_from_c(code, out)
 
 
 def rolling_advance(c: Circle, decel: float, t: float, *, precision: Precision = "double") -> None:
     """Moves c (in place) to time t >= 0 along its decelerating motion (at rest after its stop)."""
     cc = circle_to_c(c, precision)
-    check(_f(precision, "cc_rolling_advance")(byref(cc), float(decel), float(t)), "rolling_advance")
+    ctx = "rolling_advance"
+    d, tt = _errors.nonneg_finite(decel, "decel", ctx), _errors.nonneg_finite(t, "t", ctx)
+    check(_f(precision, "cc_rolling_advance")(byref(cc), d, tt), ctx)
     store_circle(c, cc)
 
 
@@ -130,7 +137,7 @@ def respond(a: Circle, b: Circle, contact: Contact, restitution: float = 1.0, *,
     Returns True when an impulse was applied, False when they were not approaching.
     """
     ca, cb, cc = circle_to_c(a, precision), circle_to_c(b, precision), contact_to_c(contact, precision)
-    code = check(_f(precision, "cc_respond")(byref(ca), byref(cb), byref(cc), float(restitution)), "respond")
+    code = check(_f(precision, "cc_respond")(byref(ca), byref(cb), byref(cc), _errors.restitution(restitution, context="respond")), "respond")
     if code == _lib.HIT:
         store_circle(a, ca)
         store_circle(b, cb)
@@ -140,7 +147,7 @@ def respond(a: Circle, b: Circle, contact: Contact, restitution: float = 1.0, *,
 def respond_segment(c: Circle, contact: Contact, restitution: float = 1.0, *, precision: Precision = "double") -> bool:
     """Bounces c off an immovable wall whose normal (circle towards wall) is contact.normal."""
     cc, ct = circle_to_c(c, precision), contact_to_c(contact, precision)
-    code = check(_f(precision, "cc_respond_segment")(byref(cc), byref(ct), float(restitution)), "respond_segment")
+    code = check(_f(precision, "cc_respond_segment")(byref(cc), byref(ct), _errors.restitution(restitution, context="respond_segment")), "respond_segment")
     if code == _lib.HIT:
         store_circle(c, cc)
     return code == _lib.HIT
@@ -154,4 +161,4 @@ def closest_point_on_segment(
     v = _lib.cc_vec2 if precision == "double" else _lib.cc_vec2f
     seg = _segment(a, b, precision)
     r = fn(v(*vec2(p, "p")), byref(seg))
-    return (r.x, r.y)
+    return Vec2(r.x, r.y)

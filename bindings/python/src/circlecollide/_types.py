@@ -6,32 +6,59 @@ import ctypes
 import math
 import struct
 from dataclasses import dataclass
-from typing import Iterable, Literal, Tuple, Union
+from typing import Iterable, Literal, NamedTuple, Union
 
-from . import _lib
+from . import _errors, _lib
 
-Vec2 = Tuple[float, float]
 Precision = Literal["double", "float"]
 
 
+class Vec2(NamedTuple):
+    """A 2D vector: ``v.x``, ``v.y``, and still a tuple (``x, y = v``, ``v == (1.0, 2.0)``)."""
+
+    x: float
+    y: float
+
+
+_new_tuple = tuple.__new__
+
+
+def _v2(x: float, y: float) -> Vec2:
+    """Vec2(x, y) without NamedTuple.__new__'s argument handling (twice as fast)."""
+    return _new_tuple(Vec2, (x, y))
+
+
 def vec2(v: Iterable[float], name: str = "vector") -> Vec2:
-    """(x, y) as a tuple of two floats; anything else is a ValueError."""
+    """(x, y) as a Vec2 of two floats; anything else is a ValueError."""
+    if isinstance(v, (str, bytes)):
+        raise ValueError(f"{name} must be a pair of numbers (x, y), got {v!r}")
     try:
         x, y = v
-        return (float(x), float(y))
+        return _v2(float(x), float(y))
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be a pair of numbers (x, y), got {v!r}") from None
+
+
+def finite_vec2(v: Iterable[float], name: str, context: str = "") -> Vec2:
+    """A Vec2 whose components are finite, else CC_ERR_INVALID naming the argument."""
+    r = v if type(v) is Vec2 else vec2(v, name)
+    if not (math.isfinite(r.x) and math.isfinite(r.y)):
+        raise _errors.invalid(context, f"{name} must be finite, got ({_errors.show(r.x)}, {_errors.show(r.y)})")
+    return r
 
 
 class Circle:
     """A moving circle: centre ``pos`` at t = 0, constant velocity ``vel``, ``radius``, ``mass``.
 
     A mutable value: the pair functions that respond or separate update it in place. Give
-    ``mass=math.inf`` for an immovable obstacle. Values are checked by the C library when the
-    circle is used (a NaN or a radius <= 0 raises ``ValueError`` there), not here.
+    ``mass=math.inf`` for an immovable obstacle. Every field is checked when it is set, at
+    construction and at assignment: ``pos`` and ``vel`` finite, ``radius`` finite and > 0,
+    ``mass`` > 0 (finite, or inf); a bad value raises ``CircleCollideError`` (a ``ValueError``
+    with ``code`` CC_ERR_INVALID) naming the field and the value, and a value that is not a
+    number raises ``TypeError``. So a ``Circle`` always holds a circle the library accepts.
     """
 
-    __slots__ = ("_pos", "_vel", "radius", "mass")
+    __slots__ = ("_pos", "_vel", "_radius", "_mass")
 
     def __init__(
         self,
@@ -40,10 +67,10 @@ class Circle:
         radius: float = 1.0,
         mass: float = 1.0,
     ) -> None:
-        self._pos = vec2(pos, "pos")
-        self._vel = vec2(vel, "vel")
-        self.radius = float(radius)
-        self.mass = float(mass)
+        self._pos = finite_vec2(pos, "pos", "Circle")
+        self._vel = finite_vec2(vel, "vel", "Circle")
+        self._radius = _errors.radius(radius, context="Circle")
+        self._mass = _errors.mass(mass, context="Circle")
 
     @property
     def pos(self) -> Vec2:
@@ -52,7 +79,7 @@ class Circle:
 
     @pos.setter
     def pos(self, value: Iterable[float]) -> None:
-        self._pos = vec2(value, "pos")
+        self._pos = finite_vec2(value, "pos", "Circle")
 
     @property
     def vel(self) -> Vec2:
@@ -61,12 +88,30 @@ class Circle:
 
     @vel.setter
     def vel(self, value: Iterable[float]) -> None:
-        self._vel = vec2(value, "vel")
+        self._vel = finite_vec2(value, "vel", "Circle")
+
+    @property
+    def radius(self) -> float:
+        """Radius: finite and > 0."""
+        return self._radius
+
+    @radius.setter
+    def radius(self, value: float) -> None:
+        self._radius = _errors.radius(value, context="Circle")
+
+    @property
+    def mass(self) -> float:
+        """Mass: > 0, finite or ``math.inf`` (immovable)."""
+        return self._mass
+
+    @mass.setter
+    def mass(self, value: float) -> None:
+        self._mass = _errors.mass(value, context="Circle")
 
     @property
     def immovable(self) -> bool:
         """True when mass is +inf."""
-        return math.isinf(self.mass) and self.mass > 0
+        return math.isinf(self._mass)
 
     def at(self, t: float) -> "Circle":
         """A copy moved along its velocity to time t."""
@@ -78,22 +123,25 @@ class Circle:
         )
 
     def copy(self) -> "Circle":
-        return Circle(self._pos, self._vel, self.radius, self.mass)
+        """An independent copy (the fields as they are, not checked again)."""
+        c = Circle.__new__(Circle)
+        c._pos, c._vel, c._radius, c._mass = self._pos, self._vel, self._radius, self._mass
+        return c
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Circle):
             return NotImplemented
-        return (self._pos, self._vel, self.radius, self.mass) == (
+        return (self._pos, self._vel, self._radius, self._mass) == (
             other._pos,
             other._vel,
-            other.radius,
-            other.mass,
+            other._radius,
+            other._mass,
         )
 
     __hash__ = None  # type: ignore[assignment]  # mutable
 
     def __repr__(self) -> str:
-        return f"Circle(pos={self._pos!r}, vel={self._vel!r}, radius={self.radius!r}, mass={self.mass!r})"
+        return f"Circle(pos={tuple(self._pos)!r}, vel={tuple(self._vel)!r}, radius={self._radius!r}, mass={self._mass!r})"
 
 
 @dataclass(frozen=True)
@@ -111,6 +159,13 @@ class Contact:
     normal: Vec2
     depth: float
 
+    def __post_init__(self) -> None:
+        # a Contact made by hand with plain tuples still has .point.x
+        if type(self.point) is not Vec2:
+            object.__setattr__(self, "point", vec2(self.point, "point"))
+        if type(self.normal) is not Vec2:
+            object.__setattr__(self, "normal", vec2(self.normal, "normal"))
+
 
 _pack6d = struct.Struct("=6d").pack  # cc_circle: pos.x, pos.y, vel.x, vel.y, radius, mass
 assert struct.calcsize("=6d") == ctypes.sizeof(_lib.cc_circle)
@@ -118,39 +173,44 @@ AnyCircleStruct = Union[_lib.cc_circle, _lib.cc_circlef]
 
 
 def circle_to_c(c: Circle, precision: Precision = "double") -> AnyCircleStruct:
+    """The C struct of a Circle (in the given precision)."""
     if not isinstance(c, Circle):
         raise TypeError(f"expected a Circle, got {type(c).__name__}")
     if precision == "double":
         # packing the six doubles is several times faster than building the nested structs
-        return _lib.cc_circle.from_buffer_copy(_pack6d(*c._pos, *c._vel, c.radius, c.mass))
+        return _lib.cc_circle.from_buffer_copy(_pack6d(*c._pos, *c._vel, c._radius, c._mass))
     if precision == "float":
         return _lib.cc_circlef(_lib.cc_vec2f(*c.pos), _lib.cc_vec2f(*c.vel), c.radius, c.mass)
     raise ValueError(f"precision must be 'double' or 'float', got {precision!r}")
 
 
 def circle_from_c(s: AnyCircleStruct) -> Circle:
+    """A Circle from the C struct."""
     return Circle((s.pos.x, s.pos.y), (s.vel.x, s.vel.y), s.radius, s.mass)
 
 
 def store_circle(dst: Circle, s: AnyCircleStruct) -> None:
     """Writes the C struct's state back into an existing Circle (in-place update)."""
-    dst.pos = (s.pos.x, s.pos.y)
-    dst.vel = (s.vel.x, s.vel.y)
-    dst.radius = s.radius
-    dst.mass = s.mass
+    # the library's outputs are valid circles: written as they are, all four or none raising
+    dst._pos = _v2(s.pos.x, s.pos.y)
+    dst._vel = _v2(s.vel.x, s.vel.y)
+    dst._radius = s.radius
+    dst._mass = s.mass
 
 
 def contact_from_c(code: int, s: Union[_lib.cc_contact, _lib.cc_contactf]) -> Contact:
+    """A Contact from the C struct and the result code (HIT or OVERLAP)."""
     return Contact(
         "hit" if code == _lib.HIT else "overlap",
         s.t,
-        (s.point.x, s.point.y),
-        (s.normal.x, s.normal.y),
+        _v2(s.point.x, s.point.y),
+        _v2(s.normal.x, s.normal.y),
         s.depth,
     )
 
 
 def contact_to_c(c: Contact, precision: Precision = "double") -> Union[_lib.cc_contact, _lib.cc_contactf]:
+    """The C struct of a Contact (in the given precision)."""
     if not isinstance(c, Contact):
         raise TypeError(f"expected a Contact, got {type(c).__name__}")
     v, s = (_lib.cc_vec2, _lib.cc_contact) if precision == "double" else (_lib.cc_vec2f, _lib.cc_contactf)

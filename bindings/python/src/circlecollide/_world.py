@@ -9,9 +9,9 @@ from typing import Any, Callable, Iterable, List, Literal, Optional
 
 import numpy as np
 
-from . import _lib
+from . import _errors, _lib
 from ._errors import CircleCollideError, check
-from ._types import Circle, Vec2, circle_from_c, circle_to_c, vec2
+from ._types import Circle, Vec2, circle_from_c, circle_to_c, finite_vec2
 
 L = _lib.lib
 byref = ctypes.byref
@@ -123,9 +123,13 @@ class World:
     component > 0 makes the world wrap along that axis (positions kept in [0, period)).
 
     ``on_contact``, if given, is called with a ``ContactEvent`` for every impulse, and
-    ``on_sensor`` with a ``SensorEvent`` for every sensor begin and end; an exception either
-    raises is kept and raised again when the call that fired it (``step``, ``add_circle``,
-    ``set_circle``, ``set_circle_props``) returns (the C call itself cannot be interrupted;
+    ``on_sensor`` with a ``SensorEvent`` for every sensor begin and end; both are also plain
+    attributes, settable at any time. ``callbacks=False`` makes a world that never calls back
+    into Python (about 1 us less per collision; setting a callback then raises ValueError).
+    A callback may read the world but not change it (``step``, ``add_circle``, ... raise
+    "called from a callback"). An exception a callback raises is kept and raised again when
+    the call that fired it (``step``, ``add_circle``, ``set_circle``, ``set_circle_props``,
+    ``set_positions``, ``set_velocities``) returns (the C call itself cannot be interrupted;
     later events of that call are not reported). The world's memory is a buffer owned by this
     object.
     """
@@ -145,6 +149,7 @@ class World:
         restitution_mix: str = "min",
         on_sensor: Optional[SensorCallback] = None,
         period: Iterable[float] = (0.0, 0.0),
+        callbacks: bool = True,
     ) -> None:
         if mode not in MODES:
             raise ValueError(f"mode must be one of {sorted(MODES)}, got {mode!r}")
@@ -154,16 +159,18 @@ class World:
         d.max_circles = _c_int(max_circles, "max_circles")
         d.max_segments = _c_int(max_segments, "max_segments")
         d.mode = MODES[mode]
-        d.restitution = float(restitution)
-        d.rest_speed = float(rest_speed)
-        d.cell_size = float(cell_size)
+        d.restitution = _errors.restitution(restitution, context="World")
+        d.rest_speed = _errors.nonneg_finite(rest_speed, "rest_speed", "World")
+        d.cell_size = _errors.nonneg_finite(cell_size, "cell_size", "World")
         if max_events is not None:
             if not 0 < int(max_events) < 2**64:
                 raise ValueError("max_events must be a positive integer")
             d.max_events = int(max_events)
-        d.rolling_decel = float(rolling_decel)
+        d.rolling_decel = _errors.nonneg_finite(rolling_decel, "rolling_decel", "World")
         d.restitution_mix = MIXES[restitution_mix]
-        px, py = vec2(period, "period")
+        px, py = finite_vec2(period, "period", "World")
+        if px < 0 or py < 0:
+            raise _errors.invalid("World", f"period must be >= 0 (0: open), got ({_errors.show(px)}, {_errors.show(py)})")
         d.period = _lib.cc_vec2(px, py)
         # a library older than these declarations ignores the fields beyond its def: refuse to
         # drop a setting silently
@@ -179,10 +186,19 @@ class World:
         self._on_contact = on_contact
         self._on_sensor = on_sensor
         self._error: Optional[BaseException] = None
-        # Kept on self so that ctypes never frees the trampolines while C holds their addresses.
-        self._trampoline = _lib.cc_contact_fn(self._dispatch) if on_contact is not None else _lib.cc_contact_fn()
+        self._in_callback = 0  # > 0 while on_contact or on_sensor runs
+        # The def holds the callbacks for the world's lifetime, so the world always gets the
+        # trampolines; they read self._on_contact / self._on_sensor at each call, which makes
+        # the attributes plain settable properties. Kept on self so that ctypes never frees
+        # them while C holds their addresses.
+        self._callbacks = bool(callbacks)
+        if not self._callbacks and (on_contact is not None or on_sensor is not None):
+            raise ValueError("World: on_contact/on_sensor given with callbacks=False")
+        self._trampoline = _lib.cc_contact_fn(self._dispatch) if self._callbacks else _lib.cc_contact_fn()
         self._sensor_trampoline = (
-            _lib.cc_sensor_fn(self._dispatch_sensor) if on_sensor is not None else _lib.cc_sensor_fn()
+            _lib.cc_sensor_fn(self._dispatch_sensor)
+            if self._callbacks and self._lib_def_size >= _lib.field_end(_lib.cc_world_def, "on_sensor")
+            else _lib.cc_sensor_fn()
         )
         d.on_contact = self._trampoline
         d.on_sensor = self._sensor_trampoline
@@ -202,7 +218,7 @@ class World:
         self.max_circles = d.max_circles
         self.max_segments = d.max_segments
         self.mode = mode
-        self.period: Vec2 = (px, py)
+        self.period: Vec2 = Vec2(px, py)
         self._scratch = (_lib.cc_circle * max(1, self.max_circles))()
         self._ids = (ctypes.c_int * max(1, self.max_circles))()
 
@@ -214,24 +230,40 @@ class World:
     def _dispatch(self, event: Any, user: Any) -> None:  # called from C: must never raise
         if self._error is not None or self._on_contact is None:
             return
+        self._in_callback += 1
         try:
             e = event.contents
             self._on_contact(
                 ContactEvent(
-                    e.a, e.b, e.segment, e.t, (e.point.x, e.point.y), (e.normal.x, e.normal.y), e.impulse
+                    e.a, e.b, e.segment, e.t, Vec2(e.point.x, e.point.y), Vec2(e.normal.x, e.normal.y), e.impulse
                 )
             )
         except BaseException as exc:  # noqa: BLE001  (re-raised by step)
             self._error = exc
+        finally:
+            self._in_callback -= 1
 
     def _dispatch_sensor(self, event: Any, user: Any) -> None:  # called from C: must never raise
         if self._error is not None or self._on_sensor is None:
             return
+        self._in_callback += 1
         try:
             e = event.contents
             self._on_sensor(SensorEvent(e.sensor, e.visitor, bool(e.begin), e.t))
         except BaseException as exc:  # noqa: BLE001  (re-raised by the call that fired it)
             self._error = exc
+        finally:
+            self._in_callback -= 1
+
+    def _mutating(self, context: str) -> None:
+        """Refuses a change of the world from inside on_contact / on_sensor (the library would
+        return CC_ERR_INVALID and do nothing): says so instead of 'invalid argument'."""
+        if self._in_callback:
+            raise _errors.invalid(
+                context,
+                f"{context} called from a callback (on_contact/on_sensor): the world cannot be changed "
+                "there; record what you need and act after the call that fired the callback returns",
+            )
 
     def _firing(self, code: int, context: str) -> int:
         """check() for a call that may fire the callbacks: an exception one of them raised
@@ -246,17 +278,21 @@ class World:
 
     def add_circle(self, circle: Circle) -> int:
         """Adds a circle (its state at the current world time); returns its id."""
+        self._mutating("add_circle")
         c = circle_to_c(circle)
         self._error = None
         return self._firing(L.cc_world_add_circle(self._w, byref(c)), "add_circle")
 
     def add_segment(self, p: Iterable[float], q: Iterable[float]) -> int:
         """Adds a static wall from p to q; returns its id."""
-        s = _lib.cc_segment(_lib.cc_vec2(*vec2(p, "p")), _lib.cc_vec2(*vec2(q, "q")))
+        self._mutating("add_segment")
+        pv, qv = finite_vec2(p, "p", "add_segment"), finite_vec2(q, "q", "add_segment")
+        s = _lib.cc_segment(_lib.cc_vec2(*pv), _lib.cc_vec2(*qv))
         return check(L.cc_world_add_segment(self._w, byref(s)), "add_segment")
 
     def remove_circle(self, id: int) -> None:
         """Removes a circle; the other ids stay valid."""
+        self._mutating("remove_circle")
         check(L.cc_world_remove_circle(self._w, _c_int(id, "id")), "remove_circle")
 
     def circle(self, id: int) -> Circle:
@@ -267,6 +303,7 @@ class World:
 
     def set_circle(self, id: int, circle: Circle) -> None:
         """Replaces a circle's state at the current world time."""
+        self._mutating("set_circle")
         c = circle_to_c(circle)
         self._error = None
         self._firing(L.cc_world_set_circle(self._w, _c_int(id, "id"), byref(c)), "set_circle")
@@ -275,15 +312,17 @@ class World:
         """The wall's end points."""
         s = _lib.cc_segment()
         check(L.cc_world_get_segment(self._w, _c_int(id, "id"), byref(s)), "segment")
-        return (s.a.x, s.a.y), (s.b.x, s.b.y)
+        return Vec2(s.a.x, s.a.y), Vec2(s.b.x, s.b.y)
 
     # ---- running ------------------------------------------------------------------------
 
     def step(self, dt: float) -> bool:
         """Advances world time by dt. Returns False when the step stopped at max_events (the
         world is consistent at the last event; call again to continue), True otherwise."""
+        self._mutating("step")
+        dt = _errors.nonneg_finite(dt, "dt", "step")
         self._error = None
-        code = self._firing(L.cc_world_step(self._w, float(dt)), "step")
+        code = self._firing(L.cc_world_step(self._w, dt), "step")
         return code != _lib.EVENT_LIMIT
 
     @property
@@ -293,26 +332,37 @@ class World:
 
     @property
     def on_contact(self) -> Optional[ContactCallback]:
+        """Called with a ``ContactEvent`` for every impulse, or None. Settable at any time
+        (also from inside a callback: it takes effect at the next event)."""
         return self._on_contact
 
     @on_contact.setter
     def on_contact(self, fn: Optional[ContactCallback]) -> None:
-        if fn is not None and not self._trampoline:
-            raise ValueError("give on_contact when making the World to receive contacts")
+        if fn is not None and not callable(fn):
+            raise TypeError(f"on_contact must be callable or None, got {fn!r}")
+        if fn is not None and not self._callbacks:
+            raise ValueError("on_contact cannot be set on a World made with callbacks=False")
         self._on_contact = fn
 
     @property
     def on_sensor(self) -> Optional[SensorCallback]:
+        """Called with a ``SensorEvent`` for every sensor begin and end, or None. Settable at
+        any time."""
         return self._on_sensor
 
     @on_sensor.setter
     def on_sensor(self, fn: Optional[SensorCallback]) -> None:
+        if fn is not None and not callable(fn):
+            raise TypeError(f"on_sensor must be callable or None, got {fn!r}")
+        if fn is not None and not self._callbacks:
+            raise ValueError("on_sensor cannot be set on a World made with callbacks=False")
         if fn is not None and not self._sensor_trampoline:
-            raise ValueError("give on_sensor when making the World to receive sensor events")
+            raise NotImplementedError("circlecollide: the C library loaded has no cc_world_def.on_sensor")
         self._on_sensor = fn
 
     @property
     def stats(self) -> WorldStats:
+        """The world's counters since it was made (``WorldStats``, cc_world_get_stats)."""
         s = _lib.cc_world_stats()
         s.struct_size = ctypes.sizeof(s)
         check(L.cc_world_get_stats(self._w, byref(s)), "stats")
@@ -344,11 +394,12 @@ class World:
         base = props if props is not None else self.circle_props(id)
         if not isinstance(base, CircleProps):
             raise TypeError(f"expected CircleProps, got {type(base).__name__}")
+        self._mutating("set_circle_props")
         new = dataclasses.replace(base, **changes)
         p = _lib.cc_circle_props(
             ctypes.sizeof(_lib.cc_circle_props),
-            float(new.restitution),
-            float(new.rolling_decel),
+            _errors.restitution(new.restitution, context="set_circle_props"),
+            _errors.nonneg_finite(new.rolling_decel, "rolling_decel", "set_circle_props"),
             _u32(new.category, "category"),
             _u32(new.mask, "mask"),
             1 if new.sensor else 0,
@@ -369,10 +420,11 @@ class World:
         base = props if props is not None else self.segment_props(id)
         if not isinstance(base, SegmentProps):
             raise TypeError(f"expected SegmentProps, got {type(base).__name__}")
+        self._mutating("set_segment_props")
         new = dataclasses.replace(base, **changes)
         p = _lib.cc_segment_props(
             ctypes.sizeof(_lib.cc_segment_props),
-            float(new.restitution),
+            _errors.restitution(new.restitution, context="set_segment_props"),
             _u32(new.category, "category"),
             _u32(new.mask, "mask"),
         )
@@ -391,9 +443,9 @@ class World:
         code = check(
             L.cc_world_cast_circle(
                 self._w,
-                _lib.cc_vec2(*vec2(p, "p")),
-                float(radius),
-                _lib.cc_vec2(*vec2(d, "d")),
+                _lib.cc_vec2(*finite_vec2(p, "p", "cast_circle")),
+                _errors.nonneg_finite(radius, "radius", "cast_circle"),
+                _lib.cc_vec2(*finite_vec2(d, "d", "cast_circle")),
                 _u32(mask, "mask"),
                 byref(out),
             ),
@@ -406,8 +458,8 @@ class World:
             out.circle,
             out.segment,
             out.t,
-            (out.point.x, out.point.y),
-            (out.normal.x, out.normal.y),
+            Vec2(out.point.x, out.point.y),
+            Vec2(out.normal.x, out.normal.y),
         )
 
     def _ids_query(self, call: Callable[[Any, int], int], context: str) -> List[int]:
@@ -422,13 +474,15 @@ class World:
     def query_circle(self, c: Iterable[float], radius: float = 0.0, mask: int = ALL_BITS) -> List[int]:
         """Ids (increasing) of the circles overlapping the disc of centre c and ``radius``
         (0: the circles whose interior holds c), whose category meets ``mask``, sensors included."""
-        cv, r, m = _lib.cc_vec2(*vec2(c, "c")), float(radius), _u32(mask, "mask")
+        cv = _lib.cc_vec2(*finite_vec2(c, "c", "query_circle"))
+        r, m = _errors.nonneg_finite(radius, "radius", "query_circle"), _u32(mask, "mask")
         return self._ids_query(lambda ids, cap: L.cc_world_query_circle(self._w, cv, r, m, ids, cap), "query_circle")
 
     def query_box(self, lo: Iterable[float], hi: Iterable[float], mask: int = ALL_BITS) -> List[int]:
         """Ids (increasing) of the circles that meet the closed box [lo, hi] (exactly: a circle
         touching it counts), whose category meets ``mask``, sensors included."""
-        lv, hv, m = _lib.cc_vec2(*vec2(lo, "lo")), _lib.cc_vec2(*vec2(hi, "hi")), _u32(mask, "mask")
+        lv, hv = _lib.cc_vec2(*finite_vec2(lo, "lo", "query_box")), _lib.cc_vec2(*finite_vec2(hi, "hi", "query_box"))
+        m = _u32(mask, "mask")
         return self._ids_query(lambda ids, cap: L.cc_world_query_box(self._w, lv, hv, m, ids, cap), "query_box")
 
     def hash(self) -> int:
@@ -440,7 +494,7 @@ class World:
         """Circle id's position without the periods taken off (its position along open axes)."""
         out = _lib.cc_vec2()
         check(L.cc_world_get_unwrapped(self._w, _c_int(id, "id"), byref(out)), "unwrapped")
-        return (out.x, out.y)
+        return Vec2(out.x, out.y)
 
     # ---- bulk state as numpy ------------------------------------------------------------
 
@@ -461,21 +515,73 @@ class World:
 
     @property
     def positions(self) -> np.ndarray:
-        """(n, 2) float64 array of the live circles' centres now, rows in id order (a copy)."""
-        return self._table()[:, 0:2].copy()
+        """(n, 2) float64 array of the live circles' centres now, rows in id order: a read-only
+        snapshot (writing raises ``ValueError``); change positions with ``set_positions``."""
+        return _frozen(self._table()[:, 0:2])
 
     @property
     def velocities(self) -> np.ndarray:
-        """(n, 2) float64 array of the live circles' velocities, rows in id order (a copy)."""
-        return self._table()[:, 2:4].copy()
+        """(n, 2) float64 array of the live circles' velocities, rows in id order: a read-only
+        snapshot; change velocities with ``set_velocities``."""
+        return _frozen(self._table()[:, 2:4])
 
     @property
     def radii(self) -> np.ndarray:
-        return self._table()[:, 4].copy()
+        """(n,) float64 array of the live circles' radii, rows in id order (read-only)."""
+        return _frozen(self._table()[:, 4])
 
     @property
     def masses(self) -> np.ndarray:
-        return self._table()[:, 5].copy()
+        """(n,) float64 array of the live circles' masses (inf: immovable), rows in id order
+        (read-only)."""
+        return _frozen(self._table()[:, 5])
+
+    def set_positions(self, positions: Any) -> None:
+        """Sets every live circle's centre from an (n, 2) array, rows in id order (as
+        ``positions`` returns them), velocities kept.
+
+        Each row goes through the world's validation as ``set_circle`` (cc_world_set_circle,
+        circle by circle in id order): a non-finite row is refused before anything changes,
+        with the row and the circle's id in the message; a refusal by the library names the row
+        too (the rows before it are set). In ``"exact"`` mode a circle put on top of another
+        is pushed apart at once, as ``set_circle`` does, and may fire on_contact.
+        """
+        self._set_columns(positions, 0, "set_positions")
+
+    def set_velocities(self, velocities: Any) -> None:
+        """Sets every live circle's velocity from an (n, 2) array, rows in id order, positions
+        kept; validated as ``set_positions``. An immovable circle keeps a velocity too."""
+        self._set_columns(velocities, 2, "set_velocities")
+
+    def _set_columns(self, values: Any, col: int, context: str) -> None:
+        self._mutating(context)
+        try:
+            a = np.asarray(values, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise ValueError(f"{context}: expected an (n, 2) array of numbers, got {values!r}") from None
+        n = check(L.cc_world_get_circles(self._w, self._ids, self._scratch, len(self._scratch)), context)
+        if a.shape != (n, 2):
+            raise ValueError(f"{context}: expected shape ({n}, 2) (one row per live circle), got {a.shape}")
+        bad = np.flatnonzero(~np.isfinite(a).all(axis=1))
+        if bad.size:
+            i = int(bad[0])
+            raise _errors.invalid(
+                context,
+                f"row {i} (circle {self._ids[i]}) must be finite, got ({_errors.show(a[i, 0])}, {_errors.show(a[i, 1])})",
+            )
+        ids = list(self._ids[:n])
+        rows = [self._scratch[i] for i in range(n)]  # copies are not needed: each row is used once
+        self._error = None
+        for i, (cid, c) in enumerate(zip(ids, rows)):
+            if col == 0:
+                c.pos.x, c.pos.y = a[i, 0], a[i, 1]
+            else:
+                c.vel.x, c.vel.y = a[i, 0], a[i, 1]
+            code = L.cc_world_set_circle(self._w, cid, byref(c))
+            if code < 0:
+                self._error = None
+                raise CircleCollideError(code, f"{context}: row {i} (circle {cid})")
+        self._firing(0, context)
 
     def kinetic_energy(self) -> float:
         """Sum of m |v|^2 / 2 over the movable circles."""
@@ -489,7 +595,13 @@ class World:
         t = self._table()
         m = t[:, 5]
         movable = np.isfinite(m)
-        return (float(np.sum(m[movable] * t[movable, 2])), float(np.sum(m[movable] * t[movable, 3])))
+        return Vec2(float(np.sum(m[movable] * t[movable, 2])), float(np.sum(m[movable] * t[movable, 3])))
+
+
+def _frozen(a: np.ndarray) -> np.ndarray:
+    out = a.copy()
+    out.flags.writeable = False
+    return out
 
 
 def _u32(v: int, name: str) -> int:
