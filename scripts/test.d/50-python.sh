@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # CI step: builds the Python wheel (scikit-build-core runs CMake on the repository), installs it
 # into a fresh venv and runs the pytest suite from outside the source tree, so that the installed
-# package, with the C library inside it, is what gets tested.
+# package, with the C library inside it, is what gets tested (mypy --strict on it too: test_typing).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 out=${CC_PYTHON_OUT:-$root/build/python}  # CI: inside the clone; developers may point it elsewhere
@@ -14,7 +14,7 @@ if ! python3 -m venv "$out/venv" 2>/dev/null; then
   python3 -m venv "$out/venv"
 fi
 py=$out/venv/bin/python
-"$py" -m pip install -q --disable-pip-version-check scikit-build-core numpy pytest hypothesis
+"$py" -m pip install -q --disable-pip-version-check scikit-build-core numpy pytest hypothesis mypy
 # no build isolation: the venv already has the build backend; the system's cmake is used
 "$py" -m pip wheel -q --disable-pip-version-check --no-build-isolation --no-deps \
   "$root/bindings/python" -w "$out/wheels"

@@ -115,7 +115,7 @@ def test_changing_the_world_from_on_contact_says_called_from_a_callback(call):
 
 
 def test_changing_the_world_from_on_sensor_says_called_from_a_callback():
-    w = World(max_circles=4)
+    w = World(max_circles=4, callbacks=True)
     s = w.add_circle(Circle((5, 0), (0, 0), 1, math.inf))
     w.set_circle_props(s, sensor=True)
     w.add_circle(Circle((0, 0), (1, 0), 0.5))
@@ -270,7 +270,7 @@ def test_set_positions_goes_through_set_circle_and_fires_on_contact():
 
 
 def test_on_contact_can_be_set_after_construction_and_unset():
-    w, cid, _ = wall_world()
+    w, cid, _ = wall_world(callbacks=True)
     assert w.on_contact is None
     events = []
     w.on_contact = events.append
@@ -286,7 +286,7 @@ def test_on_contact_can_be_set_after_construction_and_unset():
 
 
 def test_on_sensor_can_be_set_after_construction():
-    w = World(max_circles=4)
+    w = World(max_circles=4, callbacks=True)
     s = w.add_circle(Circle((5, 0), (0, 0), 1, math.inf))
     w.set_circle_props(s, sensor=True)
     w.add_circle(Circle((0, 0), (1, 0), 0.5))
@@ -325,11 +325,14 @@ def test_dir_shows_no_leaked_names():
 
 
 def test_a_world_without_callbacks_says_so_at_assignment():
+    # given no callback, a world has no trampolines (it pays nothing for them): setting one
+    # later needs callbacks=True at construction, and says so
+    for w in (World(max_circles=2), World(max_circles=2, callbacks=False)):
+        with pytest.raises(ValueError, match=r"without callbacks \(pass callbacks=True\)"):
+            w.on_contact = print
+        with pytest.raises(ValueError, match=r"without callbacks \(pass callbacks=True\)"):
+            w.on_sensor = print
     w = World(max_circles=2, callbacks=False)
-    with pytest.raises(ValueError, match="callbacks=False"):
-        w.on_contact = print
-    with pytest.raises(ValueError, match="callbacks=False"):
-        w.on_sensor = print
     w.on_contact = None  # unsetting is fine
     with pytest.raises(ValueError, match="callbacks=False"):
         World(max_circles=2, callbacks=False, on_contact=print)

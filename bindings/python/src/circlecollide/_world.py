@@ -124,8 +124,10 @@ class World:
 
     ``on_contact``, if given, is called with a ``ContactEvent`` for every impulse, and
     ``on_sensor`` with a ``SensorEvent`` for every sensor begin and end; both are also plain
-    attributes, settable at any time. ``callbacks=False`` makes a world that never calls back
-    into Python (about 1 us less per collision; setting a callback then raises ValueError).
+    attributes, settable at any time on a world that has them: ``callbacks`` (default: whether
+    a callback was given) installs the trampolines that call back into Python, about 1 us per
+    collision even while both are None, so a world given no callback pays nothing for them
+    (setting one later then raises ValueError: pass ``callbacks=True`` to set them later).
     A callback may read the world but not change it (``step``, ``add_circle``, ... raise
     "called from a callback"). An exception a callback raises is kept and raised again when
     the call that fired it (``step``, ``add_circle``, ``set_circle``, ``set_circle_props``,
@@ -149,7 +151,7 @@ class World:
         restitution_mix: str = "min",
         on_sensor: Optional[SensorCallback] = None,
         period: Iterable[float] = (0.0, 0.0),
-        callbacks: bool = True,
+        callbacks: Optional[bool] = None,
     ) -> None:
         if mode not in MODES:
             raise ValueError(f"mode must be one of {sorted(MODES)}, got {mode!r}")
@@ -191,7 +193,7 @@ class World:
         # trampolines; they read self._on_contact / self._on_sensor at each call, which makes
         # the attributes plain settable properties. Kept on self so that ctypes never frees
         # them while C holds their addresses.
-        self._callbacks = bool(callbacks)
+        self._callbacks = bool(callbacks) if callbacks is not None else (on_contact is not None or on_sensor is not None)
         if not self._callbacks and (on_contact is not None or on_sensor is not None):
             raise ValueError("World: on_contact/on_sensor given with callbacks=False")
         self._trampoline = _lib.cc_contact_fn(self._dispatch) if self._callbacks else _lib.cc_contact_fn()
@@ -341,7 +343,7 @@ class World:
         if fn is not None and not callable(fn):
             raise TypeError(f"on_contact must be callable or None, got {fn!r}")
         if fn is not None and not self._callbacks:
-            raise ValueError("on_contact cannot be set on a World made with callbacks=False")
+            raise ValueError("on_contact cannot be set on a World made without callbacks (pass callbacks=True)")
         self._on_contact = fn
 
     @property
@@ -355,7 +357,7 @@ class World:
         if fn is not None and not callable(fn):
             raise TypeError(f"on_sensor must be callable or None, got {fn!r}")
         if fn is not None and not self._callbacks:
-            raise ValueError("on_sensor cannot be set on a World made with callbacks=False")
+            raise ValueError("on_sensor cannot be set on a World made without callbacks (pass callbacks=True)")
         if fn is not None and not self._sensor_trampoline:
             raise NotImplementedError("circlecollide: the C library loaded has no cc_world_def.on_sensor")
         self._on_sensor = fn
