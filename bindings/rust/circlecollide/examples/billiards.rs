@@ -21,6 +21,7 @@ fn main() -> Result<()> {
             max_segments: 4,
             restitution: 0.95, // what new balls and cushions get; cushions are set to 0.75 below
             rest_speed: 1e-3,
+            rolling_decel: 0.15, // cloth: every ball slows along its motion and stops exactly
             ..WorldDef::default()
         },
         |e: &ContactEvent| {
@@ -29,7 +30,7 @@ fn main() -> Result<()> {
                     Other::Circle(b) => format!("ball {}", b.0),
                     Other::Wall(s) => format!("cushion {}", s.0),
                 };
-                println!("t = {:8.5} s  ball {:2} hits {:10}  impulse {:.4}", e.t, e.a.0, with, e.impulse);
+                println!("t = {:8.5} s  ball {:2} hits {:10}  impulse {:.3e} N s", e.t, e.a.0, with, e.impulse);
             }
             contacts += 1;
         },
@@ -64,9 +65,13 @@ fn main() -> Result<()> {
     let balls = |w: &World| w.circles().into_iter().filter(|(id, _)| !pockets.contains(id)).collect::<Vec<_>>();
     let energy = |w: &World| balls(w).iter().map(|(_, c)| 0.5 * c.mass * (c.vel.x * c.vel.x + c.vel.y * c.vel.y)).sum::<f64>();
     let e0 = energy(&world);
-    // 10 s in steps of 10 ms; pocketed balls leave after each
+    // steps of 10 ms until every ball rests (at most 60 s); pocketed balls leave after each
+    println!("(every tenth contact is shown; all are counted)");
     let mut taken = 0;
-    for _ in 0..1000 {
+    for _ in 0..6000 {
+        if balls(&world).iter().all(|(_, c)| c.vel.x == 0.0 && c.vel.y == 0.0) {
+            break;
+        }
         world.step(0.01)?;
         let list = pocketed.borrow();
         for &(ball, t) in &list[taken..] {
@@ -88,7 +93,11 @@ fn main() -> Result<()> {
     );
     for (id, c) in balls(&world) {
         let tag = if id == cue { " (cue)" } else { "" };
-        println!("ball {:2}{tag:6} at ({:.4}, {:.4}) moving ({:+.4}, {:+.4})", id.0, c.pos.x, c.pos.y, c.vel.x, c.vel.y);
+        if c.vel.x == 0.0 && c.vel.y == 0.0 {
+            println!("ball {:2}{tag:6} at ({:.4}, {:.4}), at rest", id.0, c.pos.x, c.pos.y);
+        } else {
+            println!("ball {:2}{tag:6} at ({:.4}, {:.4}) moving ({:+.3e}, {:+.3e})", id.0, c.pos.x, c.pos.y, c.vel.x, c.vel.y);
+        }
     }
     println!("kinetic energy {e0:.6} J -> {:.6} J; state hash {:016x}", energy(&world), world.hash());
     println!("library {}.{}.{}", version().0, version().1, version().2);
