@@ -43,8 +43,8 @@ static void summary(demo_show *show, const demo_options *o, double seconds)
         st.struct_size = sizeof st;
         cc_world_get_stats(s->world, &st);
         fprintf(stderr,
-                "  %-8s: world time %.3f, %" PRIu64 " collisions, %" PRIu64
-                " events, deepest overlap %.3g\n",
+                "  %-8s: world time %.3f, %" PRIu64 " collisions (impulses), %" PRIu64
+                " events (impacts, cell crossings, stops: EXACT's work), deepest overlap %.3g\n",
                 mode_name(s->def.mode), cc_world_time(s->world), st.collisions, st.events,
                 st.max_overlap);
         /* energy the collisions made or lost, the demo's own pushes and brakes left out */
