@@ -7,6 +7,7 @@
  *        bench_world headline [--quick]
  *        bench_world scaling  [--quick] [--max-n N] [--csv FILE]
  *        bench_world features [--quick] [--csv FILE]
+ *        bench_world disks [--quick]       periodic hard disks at area fractions 0.3, 0.5, 0.7
  *        bench_world dump-gas N PHI    (the gas's initial state, one circle a line, for peers)
  *        bench_world check-trace N PHI FILE (judges a peer's recorded steps, see peers.py)
  *        bench_world peer N PHI T_END DT  (our EXACT world on the peers' terms)
@@ -474,6 +475,72 @@ static int cmd_features(const opts *o)
     return 0;
 }
 
+/* Hard disks in a periodic box (issue 15): the cost per collision of N = 4000 disks of diameter
+ * 1 at area fractions 0.3, 0.5 and 0.7 (20 collisions per disk each, after leaving the lattice),
+ * as ratios to 0.3 within each round: a denser fluid collides more often, and each collision
+ * should cost about the same. */
+static int cmd_disks(const opts *o)
+{
+    static const double etas[3] = {0.3, 0.5, 0.7};
+    int n = 4000, reps = o->quick ? 3 : 7, k, e, i;
+    double cost[3][16], med[3], lo[3], hi[3];
+    uint64_t coll[3] = {0, 0, 0};
+    for (k = 0; k < reps; k++)
+        for (e = 0; e < 3; e++) {
+            int v = (e + k) % 3, side_n = (int)ceil(sqrt((double)n));
+            double side = sqrt(n * 3.141592653589793 * 0.25 / etas[v]), t0, c0;
+            uint64_t s = 99 + (uint64_t)k;
+            cc_world_def def;
+            world_box b;
+            cc_world_def_init(&def);
+            def.max_circles = n;
+            def.period.x = def.period.y = side;
+            b.bytes = cc_world_size(&def);
+            b.mem = bench_alloc(b.bytes);
+            b.w = cc_world_init(b.mem, b.bytes, &def, NULL);
+            if (b.w == NULL) {
+                fprintf(stderr, "bench_world disks: init failed\n");
+                return 1;
+            }
+            for (i = 0; i < n; i++) {
+                cc_circle c;
+                double u[2];
+                int q;
+                for (q = 0; q < 2; q++) {
+                    s ^= s << 13, s ^= s >> 7, s ^= s << 17;
+                    u[q] = (double)(s >> 11) / 9007199254740992.0 - 0.5;
+                }
+                c.pos.x = (i % side_n + 0.5) * side / side_n;
+                c.pos.y = (i / side_n + 0.5) * side / side_n;
+                c.vel.x = u[0];
+                c.vel.y = u[1];
+                c.radius = 0.5;
+                c.mass = 1.0;
+                cc_world_add_circle(b.w, &c);
+            }
+            step(b.w, 5.0); /* away from the lattice */
+            c0 = (double)collisions(b.w);
+            t0 = bench_now();
+            while ((double)collisions(b.w) - c0 < 20.0 * n)
+                step(b.w, 0.5);
+            cost[v][k] = (bench_now() - t0) * 1e9 / ((double)collisions(b.w) - c0);
+            coll[v] += collisions(b.w) - (uint64_t)c0;
+            world_free(&b);
+        }
+    printf("%-28s %14s %22s %10s\n", "periodic hard disks N=4000", "ns/collision", "spread", "ratio");
+    for (e = 0; e < 3; e++) {
+        double ratio[16];
+        for (k = 0; k < reps; k++)
+            ratio[k] = cost[e][k] / cost[0][k];
+        med[e] = bench_median(cost[e], (size_t)reps);
+        bench_range(cost[e], (size_t)reps, &lo[e], &hi[e]);
+        printf("area fraction %-14.1f %14.1f %10.1f - %-9.1f %10.3f\n", etas[e], med[e], lo[e], hi[e],
+               bench_median(ratio, (size_t)reps));
+    }
+    (void)coll;
+    return 0;
+}
+
 static int cmd_dump_gas(int n, double phi)
 {
     bench_scene s;
@@ -557,7 +624,7 @@ int main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     o.max_n = 1000000;
     if (argc < 2) {
-        fprintf(stderr, "usage: %s matrix|headline|scaling|features|dump-gas ... [--quick] [--csv FILE]\n", argv[0]);
+        fprintf(stderr, "usage: %s matrix|headline|scaling|features|disks|dump-gas ... [--quick] [--csv FILE]\n", argv[0]);
         return 2;
     }
     if (!strcmp(argv[1], "dump-gas") && argc == 4)
@@ -586,6 +653,8 @@ int main(int argc, char **argv)
         return cmd_scaling(&o);
     if (!strcmp(argv[1], "features"))
         return cmd_features(&o);
+    if (!strcmp(argv[1], "disks"))
+        return cmd_disks(&o);
     fprintf(stderr, "bench_world: unknown command %s\n", argv[1]);
     return 2;
 }
