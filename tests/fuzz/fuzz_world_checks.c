@@ -160,7 +160,7 @@ typedef struct model {
     double time;
     cc_world_stats stats; /* as last read in full */
     /* the call running, for the callbacks */
-    int op;
+    int op, huge; /* huge: a live circle's coordinate or velocity is beyond 1e150 (D7) */
     double call_t0;
     int ncb;
 } model;
@@ -291,7 +291,14 @@ static void on_contact(const cc_contact_event *e, void *user)
     ln = hypot(e->normal.x, e->normal.y);
     REQUIRE(m, fabs(ln - 1.0) <= 1e-6, "contact event: normal not a unit vector");
     REQUIRE(m, !isnan(e->impulse) && e->impulse >= 0.0, "contact event: negative or NaN impulse");
-    REQUIRE(m, !isnan(e->point.x) && !isnan(e->point.y), "contact event: NaN point");
+    if (isnan(e->point.x) || isnan(e->point.y) || getenv("FUZZ_WORLD_TRACE"))
+        fprintf(stderr, "fuzz_world: contact a %d b %d segment %d t %.17g point (%.17g, %.17g) normal (%.17g, %.17g) "
+                        "impulse %.17g\n", e->a, e->b, e->segment, e->t, e->point.x, e->point.y, e->normal.x,
+                e->normal.y, e->impulse);
+#ifndef FUZZ_WORLD_STRICT
+    if (!m->huge)
+#endif
+        REQUIRE(m, !isnan(e->point.x) && !isnan(e->point.y), "contact event: NaN point");
     try_mutators(m, live_id(m, e->a) ? e->a : -1);
 }
 
@@ -365,10 +372,12 @@ static void check_world(model *m, snap *s)
     }
 }
 
+static double g_vmax; /* the largest speed in the world before or after the step */
+
 static double overlap_tol(const cc_circle *a, const cc_circle *b, double t)
 {
     double scale = a->radius + b->radius + fabs(a->pos.x) + fabs(a->pos.y) + fabs(b->pos.x) + fabs(b->pos.y) +
-                   (fabs(a->vel.x) + fabs(a->vel.y) + fabs(b->vel.x) + fabs(b->vel.y)) * (1.0 + fabs(t));
+                   (fabs(a->vel.x) + fabs(a->vel.y) + fabs(b->vel.x) + fabs(b->vel.y) + 2.0 * g_vmax) * (1.0 + fabs(t));
     return 1e-9 * scale;
 }
 
@@ -502,7 +511,23 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  *     open axis returns CC_OK and leaves it at +-Inf (a periodic axis: -Inf stays -Inf);
  * D2  a periodic world given a coordinate more than 2^31 periods from the origin (a circle added
  *     or set there, or carried there by a step) converts the number of periods to int32_t
- *     (src/world/grid.c cc__wrap_coord): undefined behaviour (UBSan: float-cast-overflow). */
+ *     (src/world/grid.c cc__wrap_coord): undefined behaviour (UBSan: float-cast-overflow);
+ * D3  cc_world_query_circle compares dx * dx + dy * dy < R * R (src/world/query.c): with radii or
+ *     distances above about 1e154 both sides overflow to Inf and a circle covering the query disc
+ *     is not reported (query_box likewise, the other way, in its corner test);
+ * D4  a periodic world whose period holds more than 2^31 cells (period 20, a circle of radius 1e-9)
+ *     converts the cell count to int32_t at the step's rebuild (src/world/overlap.c, w->ncell):
+ *     undefined behaviour, every mode; SWEPT's periodic sweep converts the cell range to int64_t
+ *     likewise (src/world/swept.c:172, cc__sweep_body_periodic): a circle whose reach in the step
+ *     spans more than 2^63 cells (a kinematic circle at 1e300 along the open axis of a channel);
+ * D5  SWEPT never stops at max_events (src/world/swept.c cc__step_swept counts events but has no
+ *     cap; the header's "no step processes more than def.max_events events" reads as every mode):
+ *     a step with max_events 3 processes 4 and returns CC_OK. Code or header to change;
+ * D6  a query in a periodic world whose centre lies more than half a period outside [0, period)
+ *     misses circles: cc__near_d (src/world/world_internal.h) shifts by one period at most;
+ * D7  a contact event with a NaN point (EXACT, a circle added among others one of which moves at
+ *     1e308): tests/fuzz/world_defects/d7-nan-contact-point. The check is made only while every
+ *     coordinate and velocity is below 1e150. */
 static int far_on_axis(const model *m, int k, double x)
 {
 #ifdef FUZZ_WORLD_STRICT
@@ -518,6 +543,23 @@ static int far_on_axis(const model *m, int k, double x)
 static int step_overflows(const model *m, const snap *s, double dt)
 {
     int i;
+#ifndef FUZZ_WORLD_STRICT
+    double dm = 0.0, da = 0.0, cs;
+    for (i = 0; i < s->n; i++) {
+        da = fmax(da, 2.0 * s->c[i].radius);
+        if (!isinf(s->c[i].mass))
+            dm = fmax(dm, 2.0 * s->c[i].radius);
+    }
+    cs = fmax(m->cell_size, 1.0625 * (dm > 0.0 ? dm : da));
+    for (i = 0; i < 2; i++)
+        if (s->n > 0 && m->period[i] > 0.0 && !(m->period[i] / cs < 0x1p29))
+            return 1; /* D4 */
+    if (m->mode == CC_MODE_SWEPT && (m->period[0] > 0.0 || m->period[1] > 0.0))
+        for (i = 0; i < s->n; i++)
+            if (!((fabs(s->c[i].pos.x) + fabs(s->c[i].pos.y) + 4.0 * (fabs(s->c[i].vel.x) + fabs(s->c[i].vel.y)) * dt) /
+                      cs < 0x1p60))
+                return 1; /* D4, SWEPT */
+#endif
     for (i = 0; i < s->n; i++) {
         const cc_circle *c = &s->c[i];
         if (far_on_axis(m, 0, fabs(c->pos.x) + fabs(c->vel.x) * dt) ||
@@ -543,6 +585,7 @@ static void do_step(model *m, double dt, const snap *before)
     uint64_t h0 = cc_world_hash(m->w);
     if (dt >= 0.0 && isfinite(dt) && step_overflows(m, before, dt))
         return;
+    g_vmax = 0.0;
     if (m->mode == CC_MODE_EXACT && m->rest_speed == 0.0)
         clean = !overlaps(m, before, &what);
     read_stats(m, &s0);
@@ -556,6 +599,13 @@ static void do_step(model *m, double dt, const snap *before)
     if (rc == CC_ERR_INVALID)
         REQUIRE(m, cc_world_hash(m->w) == h0, "step: a refused step changed the world");
     read_stats(m, &s1);
+#ifndef FUZZ_WORLD_STRICT
+    if (m->mode != CC_MODE_EXACT)
+        s1.events = s0.events; /* D5: SWEPT ignores max_events */
+#endif
+    if (!(s1.events - s0.events <= m->max_events))
+        fprintf(stderr, "fuzz_world: %llu events in a step, max_events %llu, dt %.17g, result %d\n",
+                (unsigned long long)(s1.events - s0.events), (unsigned long long)m->max_events, dt, rc);
     REQUIRE(m, s1.events - s0.events <= m->max_events, "step: more events than max_events");
     if (rc == CC_EVENT_LIMIT)
         REQUIRE(m, s1.events - s0.events == m->max_events, "step: EVENT_LIMIT without max_events events");
@@ -564,9 +614,17 @@ static void do_step(model *m, double dt, const snap *before)
         REQUIRE(m, m->time == t0 + dt, "step: CC_OK but the time is not t + dt");
     if (rc == CC_EVENT_LIMIT)
         REQUIRE(m, m->time <= t0 + dt, "step: EVENT_LIMIT past t + dt");
+    e1 = kinetic(&after, &kin);
+    {
+        int i;
+        g_vmax = 0.0;
+        for (i = 0; i < before->n; i++)
+            g_vmax = fmax(g_vmax, fabs(before->c[i].vel.x) + fabs(before->c[i].vel.y));
+        for (i = 0; i < after.n; i++)
+            g_vmax = fmax(g_vmax, fabs(after.c[i].vel.x) + fabs(after.c[i].vel.y));
+    }
     if (rc != CC_ERR_INVALID && clean && overlaps(m, &after, &what))
         fail(m, what);
-    e1 = kinetic(&after, &kin);
     if (rc != CC_ERR_INVALID && !kin && isfinite(e0) && isfinite(e1)) {
         if (!(e1 <= e0 * (1.0 + 1e-9) + 1e-300)) {
             fprintf(stderr, "fuzz_world: kinetic energy %.17g -> %.17g\n", e0, e1);
@@ -791,12 +849,27 @@ static void do_query(model *m, reader *r, int box, const snap *s)
         tol = 1e-9 * (lim + fabs(k->pos.x) + fabs(k->pos.y) + fabs(c.x) + fabs(c.y) + fabs(h.x) + fabs(h.y));
         sure_in = d < lim - tol;
         sure_out = d > lim + tol;
+#ifndef FUZZ_WORLD_STRICT
+        {
+            double mx = box ? 0.5 * (c.x + h.x) : c.x, my = box ? 0.5 * (c.y + h.y) : c.y;
+            if ((m->period[0] > 0.0 && !(mx >= -0.5 * m->period[0] && mx <= 1.5 * m->period[0])) ||
+                (m->period[1] > 0.0 && !(my >= -0.5 * m->period[1] && my <= 1.5 * m->period[1])))
+                sure_in = sure_out = 0, lim = INFINITY; /* D6 */
+        }
+        if (!(lim < 1e150 && d < 1e150))
+            sure_in = sure_out = 0; /* D3: squares of distances overflow in src/world/query.c */
+#endif
         in_out = 0;
         listed = 0;
         while (j < rc && j < cap && ids[j] < s->ids[i])
             j++;
         if (j < rc && j < cap && ids[j] == s->ids[i])
             listed = 1;
+        if ((sure_in && !listed && rc <= cap) || (sure_out && listed))
+            fprintf(stderr, "fuzz_world: circle %d at (%.17g, %.17g) radius %.17g; query (%.17g, %.17g)-(%.17g, %.17g) "
+                            "radius %.17g, mask %x, category %x; distance %.17g, limit %.17g; periods %g %g\n",
+                    s->ids[i], k->pos.x, k->pos.y, k->radius, c.x, c.y, h.x, h.y, rad, mask, s->p[i].category, d, lim,
+                    m->period[0], m->period[1]);
         if (rc <= cap) {
             if (sure_in && !listed)
                 fail(m, box ? "query_box: missed a circle inside" : "query_circle: missed a circle inside");
@@ -899,6 +972,22 @@ static int one_call(model *m, reader *r, int op)
     check_world(m, &before);
     h0 = cc_world_hash(m->w);
     fuzz_world_counted.calls++;
+    {
+        int i;
+        m->huge = 0;
+        for (i = 0; i < before.n; i++)
+            if (!(fabs(before.c[i].pos.x) + fabs(before.c[i].pos.y) + fabs(before.c[i].vel.x) + fabs(before.c[i].vel.y) <
+                  1e150))
+                m->huge = 1;
+    }
+    if (getenv("FUZZ_WORLD_TRACE")) {
+        int i;
+        fprintf(stderr, "op %d at time %.17g, %d circles:\n", op, m->time, before.n);
+        for (i = 0; i < before.n; i++)
+            fprintf(stderr, "  %d: (%.17g, %.17g) v (%.17g, %.17g) r %.17g m %.17g%s\n", before.ids[i],
+                    before.c[i].pos.x, before.c[i].pos.y, before.c[i].vel.x, before.c[i].vel.y, before.c[i].radius,
+                    before.c[i].mass, before.p[i].sensor ? " sensor" : "");
+    }
     switch (op) {
     case OP_ADD:
     case OP_ADD2: {
@@ -910,6 +999,9 @@ static int one_call(model *m, reader *r, int op)
         expect = m->nfree > 0 ? m->freestack[m->nfree - 1] : m->next_new;
         if (place_ub(m, &c))
             break; /* D2 */
+        if (getenv("FUZZ_WORLD_TRACE"))
+            fprintf(stderr, "add (%.17g, %.17g) v (%.17g, %.17g) r %.17g m %.17g\n", c.pos.x, c.pos.y, c.vel.x,
+                    c.vel.y, c.radius, c.mass);
         rc = cc_world_add_circle(m->w, &c);
         if (!circle_valid(&c))
             REQUIRE(m, rc == CC_ERR_INVALID, "add_circle: an invalid circle not INVALID");
@@ -959,7 +1051,7 @@ static int one_call(model *m, reader *r, int op)
             break; /* D2 */
         rc = cc_world_set_circle(m->w, id, &c);
         if (!live_id(m, id))
-            REQUIRE(m, rc == CC_ERR_NOT_FOUND || (!circle_valid(&c) && rc == CC_ERR_INVALID),
+            REQUIRE(m, rc == CC_ERR_NOT_FOUND || ((!circle_valid(&c) || !fits_period(m, &c)) && rc == CC_ERR_INVALID),
                     "set_circle: a dead id not NOT_FOUND");
         else if (!circle_valid(&c) || !fits_period(m, &c))
             REQUIRE(m, rc == CC_ERR_INVALID, "set_circle: an invalid circle not INVALID");
