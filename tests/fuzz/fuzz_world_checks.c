@@ -515,7 +515,8 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  * D3  cc_world_query_circle compares dx * dx + dy * dy < R * R (src/world/query.c): with radii or
  *     distances above about 1e154 both sides overflow to Inf and a circle covering the query disc
  *     is not reported (query_box likewise, the other way, in its corner test);
- * D4  a periodic world whose period holds more than 2^31 cells (period 20, a circle of radius 1e-9)
+ * D4  a periodic world whose period holds more than 2^31 cells (period 20, a circle of radius 1e-9,
+ *     or an empty world whose def.cell_size is 1e-300)
  *     converts the cell count to int32_t at the step's rebuild (src/world/overlap.c, w->ncell):
  *     undefined behaviour, every mode; SWEPT's periodic sweep converts the cell range to int64_t
  *     likewise (src/world/swept.c:172, cc__sweep_body_periodic): a circle whose reach in the step
@@ -563,7 +564,7 @@ static int step_overflows(const model *m, const snap *s, double dt)
     }
     cs = fmax(m->cell_size, 1.0625 * (dm > 0.0 ? dm : da));
     for (i = 0; i < 2; i++)
-        if (s->n > 0 && m->period[i] > 0.0 && !(m->period[i] / cs < 0x1p29))
+        if (cs > 0.0 && m->period[i] > 0.0 && !(m->period[i] / cs < 0x1p29))
             return 1; /* D4 */
     if (m->mode == CC_MODE_SWEPT && (m->period[0] > 0.0 || m->period[1] > 0.0))
         for (i = 0; i < s->n; i++)
