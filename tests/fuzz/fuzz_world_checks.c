@@ -380,6 +380,7 @@ static void check_world(model *m, snap *s)
 }
 
 static double g_vmax; /* the largest speed in the world before or after the step */
+static int g_loud;    /* overlaps() prints the pair it finds (the check after a step) */
 
 static double overlap_tol(const cc_circle *a, const cc_circle *b, double t)
 {
@@ -406,7 +407,8 @@ static int overlaps(const model *m, const snap *s, const char **what)
             dx = wrapd(m, 0, b->pos.x - a->pos.x), dy = wrapd(m, 1, b->pos.y - a->pos.y);
             d = hypot(dx, dy);
             if (a->radius + b->radius - d > overlap_tol(a, b, m->time)) {
-                fprintf(stderr, "fuzz_world: circles %d (%.17g, %.17g) r %.17g m %.17g and %d (%.17g, %.17g) r %.17g m %.17g: "
+                if (g_loud)
+                    fprintf(stderr, "fuzz_world: circles %d (%.17g, %.17g) r %.17g m %.17g and %d (%.17g, %.17g) r %.17g m %.17g: "
                                 "overlap %.17g\n", s->ids[i], a->pos.x, a->pos.y, a->radius, a->mass, s->ids[j], b->pos.x,
                         b->pos.y, b->radius, b->mass, a->radius + b->radius - d);
                 *what = "EXACT: two movable circles overlap deeper than the tolerance after a step";
@@ -675,8 +677,10 @@ static void do_step(model *m, double dt, const snap *before)
                 clean = 0;
     }
 #endif
+    g_loud = 1;
     if (rc != CC_ERR_INVALID && clean && overlaps(m, &after, &what))
         fail(m, what);
+    g_loud = 0;
     if (rc != CC_ERR_INVALID && !kin && isfinite(e0) && isfinite(e1)) {
         if (!(e1 <= e0 * (1.0 + 1e-9) + 1e-300)) {
             fprintf(stderr, "fuzz_world: kinetic energy %.17g -> %.17g\n", e0, e1);
