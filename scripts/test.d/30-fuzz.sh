@@ -6,6 +6,9 @@
 # a sanitizer report or a crash fails the step and prints the input. To keep an input, copy it
 # into tests/fuzz/corpus/: test_fuzz_replay replays every file there on every ctest run.
 # To grow the corpus: run longer, then `fuzz_pair -merge=1 tests/fuzz/corpus <scratch folder>`.
+# Then the world fuzzer fuzz_world (sequences of world calls, tests/fuzz/fuzz_world_checks.c) for
+# CC_FUZZ_WORLD_SECONDS (default 60) from tests/fuzz/corpus_world/, with the same rules; its
+# corpus replay is test_fuzz_world_replay.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 dir=${CC_FUZZ_BUILD_DIR:-$root/build-fuzz}
@@ -17,7 +20,7 @@ cmake -S "$root" -B "$dir" -DCMAKE_C_COMPILER=clang -DCMAKE_BUILD_TYPE=RelWithDe
   -DCC_FUZZ=ON -DCC_BUILD_SHARED=OFF -DCC_BUILD_DEMO=OFF -DCC_BUILD_BENCH=OFF \
   -DCMAKE_C_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" \
   >"$dir/configure.log" 2>&1 || { cat "$dir/configure.log"; exit 1; }
-cmake --build "$dir" -j "${CC_JOBS:-2}" --target fuzz_pair test_fuzz_replay
+cmake --build "$dir" -j "${CC_JOBS:-2}" --target fuzz_pair test_fuzz_replay fuzz_world test_fuzz_world_replay
 
 run=$dir/run
 rm -rf "$run"
@@ -39,4 +42,27 @@ if [ $rc -ne 0 ] || [ -n "$(ls -A "$run/crashes")" ]; then
 fi
 # the replay of the committed corpus, built with the same sanitizers (no libFuzzer)
 (cd "$root/tests/fuzz/corpus" && "$dir/tests/test_fuzz_replay" * | tail -n 3)
-echo "30-fuzz: ${secs}s of fuzzing, no violation"
+echo "30-fuzz: ${secs}s of fuzz_pair, no violation"
+
+# the world fuzzer, the same way
+wsecs=${CC_FUZZ_WORLD_SECONDS:-60}
+wrun=$dir/run_world
+rm -rf "$wrun"
+mkdir -p "$wrun/new" "$wrun/crashes"
+rc=0
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+  "$dir/tests/fuzz_world" -max_total_time="$wsecs" -timeout=30 -rss_limit_mb=2048 -print_final_stats=1 \
+  -artifact_prefix="$wrun/crashes/" "$wrun/new" "$root/tests/fuzz/corpus_world" >"$wrun/log.txt" 2>&1 || rc=$?
+grep -E "^fuzz_world:|ERROR|SUMMARY|runtime error|stat::number_of_executed_units|stat::new_units_added|Done" "$wrun/log.txt" || true
+if [ $rc -ne 0 ] || [ -n "$(ls -A "$wrun/crashes" | grep -v '^slow-unit-' || true)" ]; then
+  tail -n 40 "$wrun/log.txt"
+  for f in "$wrun/crashes"/*; do
+    [ -e "$f" ] || continue
+    echo "30-fuzz: failing input $f (FUZZ_WORLD_TRACE=1 $dir/tests/fuzz_world $f traces it):"
+    od -A d -t x1 "$f" | head -n 20
+  done
+  echo "30-fuzz: fuzz_world FAILED (exit $rc); keep the input in tests/fuzz/corpus_world/ once fixed"
+  exit 1
+fi
+(cd "$root/tests/fuzz/corpus_world" && "$dir/tests/test_fuzz_world_replay" * | tail -n 1)
+echo "30-fuzz: ${secs}s of fuzz_pair and ${wsecs}s of fuzz_world, no violation"
