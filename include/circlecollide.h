@@ -482,8 +482,9 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  *         impact (billiards) do not meet this. */
 
 /* The position of circle id without wrapping: where it would be had the periods not been taken
- * off (for diffusion: the mean squared displacement). Along an open axis, its position. CC_OK,
- * CC_ERR_NOT_FOUND or CC_ERR_INVALID (NULL). */
+ * off (for diffusion: the mean squared displacement). Along an open axis, its position. The
+ * count of periods taken off saturates at 2^30 either way (a circle set 1e300 away keeps its
+ * exact image, not that count). CC_OK, CC_ERR_NOT_FOUND or CC_ERR_INVALID (NULL). */
 CC_API int cc_world_get_unwrapped(const cc_world *w, int id, cc_vec2 *out);
 
 /* Current world time (0 after init); NaN when w is NULL. */

@@ -79,6 +79,32 @@ static void test_far_positions_wrap_exactly(void)
     tw_free(&m);
 }
 
+/* Found by the world fuzzer (tests/fuzz/world_defects/): a period of more than 2^31 cells
+ * (period 20, a circle of radius 1e-9) made the cell count's conversion undefined (D4): the cells
+ * are widened to period / 2^30; a query centred periods away from the box missed circles (D6):
+ * its centre is taken to its image first. */
+static void test_tiny_cells_and_far_query_centres(void)
+{
+    int mode;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++) {
+        tw_mem m;
+        cc_world *w = periodic(&m, mode, 20.0, 20.0, 8, 0);
+        cc_circle tiny = tw_circle(1, 1, 1, 0, 1e-9, 1), big = tw_circle(5, 5, 0, 0, 1, 1), got;
+        int ids[4];
+        TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &tiny));
+        /* cells of 20 / 2^30: 1e-3 crosses some 5e4 of them (EXACT), within the event cap */
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1e-3));
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &got));
+        TEST_ASSERT_DOUBLE_WITHIN(1e-12, 1.001, got.pos.x);
+        TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &big));
+        /* (5, 5) seen from (5 - 3 * 20, 5 + 40) and from (5.5 + 1e6 * 20, 5): the same circle */
+        TEST_ASSERT_EQUAL_INT(1, cc_world_query_circle(w, (cc_vec2){5.0 - 60.0, 5.0 + 40.0}, 0.5, 0xFFFFFFFFu, ids, 4));
+        TEST_ASSERT_EQUAL_INT(1, ids[0]);
+        TEST_ASSERT_EQUAL_INT(1, cc_world_query_circle(w, (cc_vec2){5.5 + 2e7, 5.0}, 0.0, 0xFFFFFFFFu, ids, 4));
+        tw_free(&m);
+    }
+}
+
 /* Across the edge: a at x = 9, b at x = 1 (through the edge 2 apart), radii 0.5, a moving +1 at
  * b at rest, equal masses, elastic: they touch when 1 apart, at t = 1 (a at 10, shown as 0), a
  * stops and b leaves at +1. At t = 3: a at 0, b at 3. The impact is predicted before a crosses
@@ -244,6 +270,7 @@ int main(void)
     UNITY_BEGIN();
     RUN_TEST(test_through_the_edge);
     RUN_TEST(test_far_positions_wrap_exactly);
+    RUN_TEST(test_tiny_cells_and_far_query_centres);
     RUN_TEST(test_impact_across_the_edge);
     RUN_TEST(test_virial_and_wall_impulse);
     RUN_TEST(test_channel);

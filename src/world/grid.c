@@ -88,7 +88,7 @@ void cc__grid_move(cc_world *w, int id, int dir)
         double *p = axis ? &b->py : &b->px;
         *c = step > 0 ? 0 : w->ncell[axis] - 1;
         *p -= step * w->period[axis];
-        CC__ARR(w, cc__props, off_props)[id].wrap[axis] += step;
+        CC__ARR(w, cc__props, off_props)[id].wrap[axis] = cc__turns_add(CC__ARR(w, cc__props, off_props)[id].wrap[axis], step);
     }
     cc__link(w, id, cc__head_of(w, id));
 }
@@ -120,8 +120,18 @@ double cc__wrap_coord(const cc_world *w, double x, int k, int32_t *turns)
         r += P; /* a tiny negative remainder may round to P itself: that is 0 again */
     if (r >= P)
         r = 0.0;
-    *turns = (int32_t)floor((x - r) / P + 0.5);
+    {   /* the count of periods, saturated: a coordinate 2^30 periods out (1e300 in a period of 20)
+         * keeps its image exactly, its count of turns only up to that */
+        double q = floor((x - r) / P + 0.5);
+        *turns = q > 0x1p30 ? (int32_t)0x40000000 : q < -0x1p30 ? -(int32_t)0x40000000 : (int32_t)q;
+    }
     return r;
+}
+
+int32_t cc__turns_add(int32_t a, int32_t b)
+{
+    int64_t s = (int64_t)a + (int64_t)b; /* both within 2^30: no overflow, then saturated */
+    return s > 0x40000000 ? (int32_t)0x40000000 : s < -0x40000000 ? -(int32_t)0x40000000 : (int32_t)s;
 }
 
 void cc__wrap_body(cc_world *w, int id)
@@ -135,7 +145,7 @@ void cc__wrap_body(cc_world *w, int id)
         int32_t turns;
         if (w->period[k] > 0.0 && !(*x >= 0.0 && *x < w->period[k])) {
             *x = cc__wrap_coord(w, *x, k, &turns);
-            p->wrap[k] += turns;
+            p->wrap[k] = cc__turns_add(p->wrap[k], turns);
         }
     }
 }

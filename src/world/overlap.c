@@ -188,6 +188,9 @@ void cc__rebuild(cc_world *w)
     int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
     int i, j;
     w->cs = cc__world_cell_size(w);
+    for (i = 0; i < 2; i++) /* at most 2^30 cells along a period: cell indices stay int32_t */
+        if (w->period[i] > 0.0 && w->period[i] / w->cs > 0x1p30)
+            w->cs = w->period[i] * 0x1p-30;
     w->inv_cs = 1.0 / w->cs;
     for (i = 0; i < 2; i++) { /* periodic: whole cells along the period, the last one the wider */
         w->ncell[i] = w->period[i] > 0.0 ? (int32_t)floor(w->period[i] / w->cs) : 0;

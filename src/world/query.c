@@ -113,6 +113,14 @@ CC_API int cc_world_query_circle(const cc_world *w, cc_vec2 c, double radius, ui
     cc__query q;
     if (!cc__query_ok(w, ids, capacity) || !isfinite(c.x) || !isfinite(c.y) || !(radius >= 0.0) || !isfinite(radius))
         return CC_ERR_INVALID;
+    {   /* a centre outside the period is taken to its image first (the nearest images of the
+         * circles are looked for within half a period of it) */
+        int32_t turns;
+        if (w->period[0] > 0.0)
+            c.x = cc__wrap_coord(w, c.x, 0, &turns);
+        if (w->period[1] > 0.0)
+            c.y = cc__wrap_coord(w, c.y, 1, &turns);
+    }
     memset(&q, 0, sizeof q);
     q.w = w;
     q.cx = q.x0 = q.x1 = c.x;

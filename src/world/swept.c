@@ -19,6 +19,17 @@
 #include "precision_end.h"
 
 /* Offers an impact at relative time t to body i (kept when earlier than what it holds). */
+/* floor(v) as a cell index, clamped to +-2^62 (a very fast circle's reach, or NaN, would make
+ * the conversion undefined); the span of cells is cut to the period or the grid after. */
+static int64_t cc__cell64(double v)
+{
+    if (!(v > -0x1p62))
+        return -((int64_t)1 << 62);
+    if (!(v < 0x1p62))
+        return (int64_t)1 << 62;
+    return (int64_t)floor(v);
+}
+
 static void cc__offer(cc_world *w, int i, double t, int kind, int partner)
 {
     cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
@@ -169,8 +180,8 @@ static void cc__sweep_body_periodic(cc_world *w, int i, double dt, double rmax, 
         lo[0] = b->cx - 1, hi[0] = b->cx + 1, lo[1] = b->cy - 1, hi[1] = b->cy + 1;
     } else {
         double reach = (b->r + rmax + 2.0 * di) * (1.0 + 0x1p-20) + 0x1p-40 * (fabs(b->px) + fabs(b->py));
-        lo[0] = (int64_t)floor((b->px - reach) * w->inv_cs) - 1, hi[0] = (int64_t)floor((b->px + reach) * w->inv_cs) + 1;
-        lo[1] = (int64_t)floor((b->py - reach) * w->inv_cs) - 1, hi[1] = (int64_t)floor((b->py + reach) * w->inv_cs) + 1;
+        lo[0] = cc__cell64((b->px - reach) * w->inv_cs) - 1, hi[0] = cc__cell64((b->px + reach) * w->inv_cs) + 1;
+        lo[1] = cc__cell64((b->py - reach) * w->inv_cs) - 1, hi[1] = cc__cell64((b->py + reach) * w->inv_cs) + 1;
     }
     for (k = 0; k < 2; k++) { /* each cell once: a span of a whole period or more is the period */
         int64_t n = w->ncell[k] > 0 ? w->ncell[k] : CC__CELL_MAX;

@@ -286,6 +286,8 @@ static inline int cc__cells_around(const cc_world *w, int32_t cx, int32_t cy, in
 /* Coordinate x wrapped into [0, period) along a periodic axis k, exactly (as fmod would); the
  * number of periods taken off goes to *turns. */
 double cc__wrap_coord(const cc_world *w, double x, int k, int32_t *turns);
+/* a + b for counts of turns, saturated at +-2^30 (never an overflow). */
+int32_t cc__turns_add(int32_t a, int32_t b);
 /* Grid cell size for the current circles (>= largest movable diameter). */
 double cc__world_cell_size(const cc_world *w);
 
