@@ -270,8 +270,9 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * Collapse  With restitution < 1 a group of bodies can collide infinitely often in a finite
  *           time (inelastic collapse), and bodies pressed together would exchange ever smaller
  *           impulses. Two remedies: approaches slower than def.rest_speed get restitution 0
- *           (and those slower than rest_speed * 2^-20 none at all), and no step processes more
- *           than def.max_events events: it then returns CC_EVENT_LIMIT with the world
+ *           (and those slower than rest_speed * 2^-20 none at all), and no EXACT step processes
+ *           more than def.max_events events (SWEPT and DISCRETE make a bounded number of passes
+ *           per step and do not count against it): it then returns CC_EVENT_LIMIT with the world
  *           consistent at the time of the last event processed; the next cc_world_step
  *           continues from there. A body squeezed between an immovable circle moving towards
  *           a wall (an impossible scene) hits that cap at every call.
@@ -422,8 +423,8 @@ CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s);
  * CC_ERR_INVALID (NULL w, or called from the contact callback). */
 CC_API int cc_world_remove_circle(cc_world *w, int id);
 
-/* Advances world time by dt >= 0 in the world's mode. Returns CC_OK; CC_EVENT_LIMIT when the
- * step processed max_events events and stopped early (the world is consistent, its time is that
+/* Advances world time by dt >= 0 in the world's mode. Returns CC_OK; CC_EVENT_LIMIT when an
+ * EXACT step processed max_events events and stopped early (the world is consistent, its time is that
  * of the last event processed, and another call continues); CC_ERR_INVALID for dt < 0, NaN or
  * Inf, a world time that would overflow, or a call from the contact callback (nothing
  * changes). dt = 0 resolves pending overlaps and the impacts due now. */
