@@ -328,11 +328,13 @@ typedef struct cc_contact_event {
 } cc_contact_event;
 
 /* Called for each impulse, from inside the call that applied it: cc_world_step (every mode),
- * and in EXACT also cc_world_add_circle and cc_world_set_circle (a circle put on top of another
- * is pushed apart and, when the pair approaches, given its impulse at once). No other call fires
- * it. It may read the world (get_circle, get_circles, time, stats) but not change it: add, set,
- * remove, add_segment and step called from inside return CC_ERR_INVALID and do nothing, whichever
- * call fired it. Record what you need and act on it after that call returns (e.g. remove a
+ * and in EXACT also cc_world_add_circle, cc_world_set_circle and cc_world_set_circle_props (a
+ * circle put on top of another, or a filter change that makes an overlapping pair interact: the
+ * pair is pushed apart and, when it approaches, given its impulse at once). No other call fires
+ * it (nor on_sensor: see "Per-body properties"). It may read the world (get_circle, get_circles,
+ * time, stats, props, queries, casts, hash) but not change it: add, set, remove, add_segment,
+ * step and the props setters called from inside return CC_ERR_INVALID and do nothing, whichever
+ * call fired it (the world fuzzer tries each from both callbacks). Record what you need and act on it after that call returns (e.g. remove a
  * pocketed ball after the step). */
 typedef void (*cc_contact_fn)(const cc_contact_event *event, void *user);
 
