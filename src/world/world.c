@@ -38,14 +38,18 @@ static void cc__def_defaults(cc_world_def *def)
     def->period.y = 0.0;
 }
 
+
+#define CC__END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
+
+/* Where each field of the def ends: the struct_size handshake of def_init_sized and read_def. */
 static const size_t cc__def_ends[] = {
-    offsetof(cc_world_def, struct_size) + sizeof(size_t), offsetof(cc_world_def, max_circles) + sizeof(int),
-    offsetof(cc_world_def, max_segments) + sizeof(int), offsetof(cc_world_def, mode) + sizeof(int),
-    offsetof(cc_world_def, restitution) + sizeof(double), offsetof(cc_world_def, rest_speed) + sizeof(double),
-    offsetof(cc_world_def, cell_size) + sizeof(double), offsetof(cc_world_def, max_events) + sizeof(uint64_t),
-    offsetof(cc_world_def, on_contact) + sizeof(cc_contact_fn), CC__DEF_1_0,
-    offsetof(cc_world_def, rolling_decel) + sizeof(double), offsetof(cc_world_def, restitution_mix) + sizeof(int),
-    offsetof(cc_world_def, on_sensor) + sizeof(cc_sensor_fn), offsetof(cc_world_def, period) + sizeof(cc_vec2)};
+    CC__END(cc_world_def, struct_size), CC__END(cc_world_def, max_circles),
+    CC__END(cc_world_def, max_segments), CC__END(cc_world_def, mode),
+    CC__END(cc_world_def, restitution), CC__END(cc_world_def, rest_speed),
+    CC__END(cc_world_def, cell_size), CC__END(cc_world_def, max_events),
+    CC__END(cc_world_def, on_contact), CC__END(cc_world_def, user),
+    CC__END(cc_world_def, rolling_decel), CC__END(cc_world_def, restitution_mix),
+    CC__END(cc_world_def, on_sensor), CC__END(cc_world_def, period)};
 
 CC_API void cc_world_def_init_sized(cc_world_def *def, size_t struct_size)
 {
@@ -78,7 +82,6 @@ size_t cc__whole_fields(size_t n, const size_t *ends, int count)
     return fit;
 }
 
-#define CC__END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
 
 /* A period: 0 (open), or finite and wider than def.cell_size ("at least twice the largest
  * diameter plus a cell": the diameters are checked as circles arrive, cc__fits_period). */
@@ -91,20 +94,12 @@ static int cc__period_ok(double p, double cell_hint)
  * their default. */
 static int cc__read_def(const cc_world_def *in, cc_world_def *out)
 {
-    static const size_t ends[] = {
-        CC__END(cc_world_def, struct_size), CC__END(cc_world_def, max_circles),
-        CC__END(cc_world_def, max_segments), CC__END(cc_world_def, mode),
-        CC__END(cc_world_def, restitution), CC__END(cc_world_def, rest_speed),
-        CC__END(cc_world_def, cell_size), CC__END(cc_world_def, max_events),
-        CC__END(cc_world_def, on_contact), CC__END(cc_world_def, user),
-        CC__END(cc_world_def, rolling_decel), CC__END(cc_world_def, restitution_mix),
-        CC__END(cc_world_def, on_sensor), CC__END(cc_world_def, period)};
     if (in == NULL)
         return CC_ERR_INVALID;
     if (in->struct_size < CC__DEF_MIN)
         return CC_ERR_VERSION;
-    cc_world_def_init(out);
-    memcpy(out, in, cc__whole_fields(in->struct_size, ends, (int)(sizeof ends / sizeof ends[0])));
+    cc__def_defaults(out);
+    memcpy(out, in, cc__whole_fields(in->struct_size, cc__def_ends, (int)(sizeof cc__def_ends / sizeof cc__def_ends[0])));
     out->struct_size = sizeof *out;
     if (out->max_circles < 0 || out->max_circles > CC__MAX_CAPACITY || out->max_segments < 0 ||
         out->max_segments > CC__MAX_CAPACITY || out->mode < CC_MODE_EXACT || out->mode > CC_MODE_DISCRETE ||
