@@ -91,8 +91,7 @@ CC__NOINLINE void cc__try_roll(const cc_world *w, int i, int j, double sx, doubl
         return;
     ++*tests;
     speeds = fabs(bi->vx) + fabs(bi->vy) + fabs(vxj) + fabs(vyj);
-    r = cc__roll_sweep(dpx, dpy, bi->vx, bi->vy, ki, vxj, vyj, kj, R, best->t - now, -1,
-                       2.0 * (0x1p-40 * speeds > w->rest_speed * 0x1p-20 ? 0x1p-40 * speeds : w->rest_speed * 0x1p-20),
+    r = cc__roll_sweep(dpx, dpy, bi->vx, bi->vy, ki, vxj, vyj, kj, R, best->t - now, -1, 2.0 * cc__approach_min(w, speeds),
                        &t, &nx, &ny);
     if (r == CC_MISS || !(now + t < best->t))
         return;

@@ -18,7 +18,6 @@
 #include "solver.inc"
 #include "precision_end.h"
 
-/* Offers an impact at relative time t to body i (kept when earlier than what it holds). */
 /* floor(v) as a cell index, clamped to +-2^62 (a very fast circle's reach, or NaN, would make
  * the conversion undefined); the span of cells is cut to the period or the grid after. */
 static int64_t cc__cell64(double v)
@@ -30,6 +29,7 @@ static int64_t cc__cell64(double v)
     return (int64_t)floor(v);
 }
 
+/* Offers an impact at relative time t to body i (kept when earlier than what it holds). */
 static void cc__offer(cc_world *w, int i, double t, int kind, int partner)
 {
     cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
@@ -66,8 +66,7 @@ static void cc__pair(cc_world *w, int i, int j, double dt)
             {
                 double sp = fabs(bi->vx) + fabs(bi->vy) + fabs(bj->vx) + fabs(bj->vy);
                 r = cc__roll_sweep(dp.x, dp.y, bi->vx, bi->vy, P[i].roll, bj->vx, bj->vy, P[j].roll, R, dt, -1,
-                                   2.0 * (0x1p-40 * sp > w->rest_speed * 0x1p-20 ? 0x1p-40 * sp : w->rest_speed * 0x1p-20),
-                                   &t, &n.x, &n.y);
+                                   2.0 * cc__approach_min(w, sp), &t, &n.x, &n.y);
             }
             if (r == CC_MISS)
                 return;

@@ -336,9 +336,16 @@ void cc__prefetch_ahead(const cc_world *w);
  * bodies' speeds (their sum is `speeds`), and not a resting contact, which approaches at less
  * than rest_speed * 2^-20 (the sequence of ever smaller impulses that pairwise resolution of
  * bodies pressed together would otherwise produce ends there). */
+/* The least approach speed that counts, for circles of summed speeds `speeds`: above rounding
+ * (2^-40 of them) and above rest_speed * 2^-20. */
+static inline double cc__approach_min(const cc_world *w, double speeds)
+{
+    double a = 0x1p-40 * speeds, b = w->rest_speed * 0x1p-20;
+    return a > b ? a : b;
+}
 static inline int cc__approaching(const cc_world *w, double vn, double speeds)
 {
-    return vn > 0x1p-40 * speeds && vn > w->rest_speed * 0x1p-20;
+    return vn > cc__approach_min(w, speeds);
 }
 
 /* ---- resolve.c: every impulse goes through here ---- */
