@@ -13,33 +13,6 @@
 
 #include <float.h>
 
-/* Inputs, chosen so that about half the pairs hit within t_max = 1 and none overlap at t = 0
- * (an overlap short-cuts every method and would hide the cost of the sweep). Units are metres
- * and seconds at everyday sizes so that Box2D (float, 5 mm linear slop) is on home ground. */
-static void make_pairs(size_t n, uint64_t seed, cc_circle *a, cc_circle *b)
-{
-    bench_rng rng;
-    size_t i;
-    rng.s = seed;
-    for (i = 0; i < n; i++) {
-        double ra = bench_uniform(&rng, 0.05, 0.5), rb = bench_uniform(&rng, 0.05, 0.5);
-        double ang = bench_uniform(&rng, 0.0, 6.283185307179586);
-        double dist = (ra + rb) * 1.01 + bench_uniform(&rng, 0.0, 3.0);
-        a[i].pos.x = bench_uniform(&rng, -50.0, 50.0);
-        a[i].pos.y = bench_uniform(&rng, -50.0, 50.0);
-        b[i].pos.x = a[i].pos.x + dist * cos(ang);
-        b[i].pos.y = a[i].pos.y + dist * sin(ang);
-        a[i].vel.x = bench_uniform(&rng, -4.0, 4.0);
-        a[i].vel.y = bench_uniform(&rng, -4.0, 4.0);
-        /* b heads roughly back towards a so that hits are common but not certain */
-        b[i].vel.x = -2.0 * cos(ang) + bench_uniform(&rng, -4.0, 4.0);
-        b[i].vel.y = -2.0 * sin(ang) + bench_uniform(&rng, -4.0, 4.0);
-        a[i].radius = ra;
-        b[i].radius = rb;
-        a[i].mass = b[i].mass = 1.0;
-    }
-}
-
 /* |t - t_ref| statistics and hit/miss disagreements of one method against the reference. */
 typedef struct accuracy {
     long disagreements, both_hit;
@@ -103,7 +76,7 @@ int main(int argc, char **argv)
     }
 
     bench_pair_data_init(&d, n);
-    make_pairs(n, 20261122u, d.a, d.b);
+    bench_make_pairs(n, 20261122u, d.a, d.b);
     bench_pair_data_derive(&d);
     n_all = n_methods = bench_methods(methods, n);
     if (only != NULL) {

@@ -6,6 +6,7 @@
 #include "circlecollide.h"
 
 #include <stddef.h>
+#include <stdint.h>
 
 #define BENCH_MAX_METHODS 8
 #define BENCH_BLOCK 1024 /* pairs per cache-resident block: 2 x 48 KiB of double inputs */
@@ -33,6 +34,9 @@ typedef struct bench_method {
     int *code;
 } bench_method;
 
+/* n random pairs (seeded): about half hit within t_max = 1, none overlap at t = 0 (bench_pair's
+ * inputs; bench_exact times cc_sweep on the same kind of pairs) */
+void bench_make_pairs(size_t n, uint64_t seed, cc_circle *a, cc_circle *b);
 void bench_pair_data_init(bench_pair_data *d, size_t n);
 void bench_pair_data_free(bench_pair_data *d);
 /* fills af, bf and the columns from a, b */
