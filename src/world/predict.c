@@ -134,8 +134,8 @@ CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, co
     const cc__body *bj = &B[j];
     double dt = now - bj->t, R, dv2, cr;
     cc_vec2 dp, dv;
-    if (feat && cc__featured_pair(w, i, j, sx, sy, best, tests))
-        return;
+    if (feat && (w->features & (CC__F_FILTER | CC__F_SENSOR)) && cc__featured_pair(w, i, j, sx, sy, best, tests))
+        return; /* (without filters or sensors every pair passes: a periodic world reads no props) */
     if (i_fixed && isinf(CC__CARR(w, cc__cold, off_cold)[j].m))
         return; /* two immovable circles pass through each other */
     if (feat && (w->features & CC__F_ROLL) &&
@@ -284,6 +284,15 @@ static double cc__next_move(const cc_world *w, int i, const cc__body *b, int32_t
     return cc__cross_time(w, b, dir);
 }
 
+/* Whether the nx x ny cells from (x0, y0) all lie within the period along each periodic axis:
+ * then each is its own image (shift 0), and the plain walk below visits the same cells in the
+ * same order as the wrapped one, without its divisions. */
+static inline int cc__block_within(const cc_world *w, int32_t x0, int32_t y0, int nx, int ny)
+{
+    return (w->ncell[0] == 0 || (x0 >= 0 && x0 + nx <= w->ncell[0])) &&
+           (w->ncell[1] == 0 || (y0 >= 0 && y0 + ny <= w->ncell[1]));
+}
+
 /* Circles filed under the nx x ny cells from (x0, y0), row by row, tested against body i. Within
  * a tile (cc__grid_slot) a row's slots are consecutive and rows are a tile's width apart, so
  * the hash is computed only where a tile begins. One flat loop, the world's fields read once:
@@ -299,7 +308,7 @@ CC__INLINE_ALWAYS void cc__scan_block_x(const cc_world *w, const cc__body *B, in
     uint32_t s_row = cc__grid_slot(w, x0, y0), s;
     int32_t x, y;
     int j;
-    if (feat && (w->features & CC__F_PERIODIC)) {
+    if (feat && (w->features & CC__F_PERIODIC) && !cc__block_within(w, x0, y0, nx, ny)) {
         /* the cells by their logical coordinates: across a period's edge each is the image of a
          * cell of the period, and its circles are seen shifted by the period */
         for (y = y0; y < y0 + ny; y++)
