@@ -97,8 +97,7 @@ int cc__step_exact(cc_world *w, double t_end)
         cc__touch tc;
         if (cc__sort_due(w))
             cc__sort_bodies(w);
-        i = cc__heap_top(w);
-        t = cc__heap_top_key(w);
+        i = cc__queue_top(w, &t);
         if (i < 0 || t > t_end)
             break;
         if (done == w->max_events)

@@ -200,6 +200,7 @@ void cc__rebuild(cc_world *w)
     if (w->wall_tree_n != w->n_segments)
         cc__walls_build(w); /* walls were added: the tree is made again */
     w->heap_n = 0;
+    cc__queue_clear(w);
     if (w->use_grid)
         cc__grid_clear(w);
     if (w->use_grid && w->mode != CC_MODE_EXACT) {

@@ -403,9 +403,9 @@ static void cc__finish(cc_world *w, int i, cc__cand *best, double t_cross, int32
     ev->t_cross = t_cross;
     ev->dir = dir;
     if (best->kind == CC__EV_NONE && !(t_cross < HUGE_VAL))
-        cc__heap_remove(w, i);
+        cc__queue_remove(w, i);
     else
-        cc__heap_update(w, i, best->t < t_cross ? best->t : t_cross);
+        cc__queue_update(w, i, best->t < t_cross ? best->t : t_cross);
 }
 
 /* The neighbour scan of a prediction of moving body i, at now: its earliest hit on a circle
@@ -476,7 +476,7 @@ void cc__predict(cc_world *w, int i)
         cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
         ev->kind = CC__EV_NONE;
         ev->t = ev->t_cross = HUGE_VAL;
-        cc__heap_remove(w, i);
+        cc__queue_remove(w, i);
         return;
     }
     cc__advance_body(w, bi, w->now);
@@ -612,7 +612,9 @@ void cc__prefetch_ahead(const cc_world *w)
     const cc__event *EV = CC__CARR(w, cc__event, off_ev);
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
     int q, m = 1, end = w->heap_n < 5 ? w->heap_n : 5;
-    if (w->heap_n < CC__PREFETCH_MIN_BODIES || !w->use_grid || (w->features & CC__F_PERIODIC))
+    if (w->n_circles < CC__PREFETCH_MIN_BODIES || w->heap_n < 2 || !w->use_grid) /* (bodies, not the heap: a
+                                            calendar keeps the heap short; a periodic world's cells at its
+                                            edges are prefetched unwrapped: another slot, harmless) */
         return;
     for (q = 1; q < end; q++) {
         __builtin_prefetch(&B[heap[q].id]);

@@ -122,6 +122,7 @@ void cc__sort_bodies(cc_world *w)
     /* every index changed: grid lists, queue and the partners of events are rebuilt */
     cc__grid_clear(w);
     w->heap_n = 0;
+    cc__queue_clear(w);
     for (p = 0; p < n; p++) {
         hpos[p] = -1;
         if (C[p].flags & CC__ALIVE) {

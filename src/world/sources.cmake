@@ -2,6 +2,7 @@
 list(APPEND CC_WORLD_SOURCES
   world/world.c     # API, def handshake, memory layout, ids
   world/events.c    # indexed 4-ary heap of predicted events
+  world/calendar.c  # EXACT's queue in large worlds: an event calendar in front of the heap
   world/grid.c      # hashed uniform cell list
   world/predict.c   # EXACT: a body's earliest event
   world/resolve.c   # every impulse and push-apart

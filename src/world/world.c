@@ -146,7 +146,8 @@ static uint32_t cc__slots(const cc_world_def *d)
 static size_t cc__layout(const cc_world_def *d, cc_world *w)
 {
     size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
-    size_t offs[17], sizes[17];
+    size_t offs[19], sizes[19];
+    int cal_nb = cc__calendar_buckets(d->mode, d->max_circles);
     int clu_b, clu_c;
     int k;
     sizes[0] = n * sizeof(cc__body);
@@ -166,7 +167,9 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[14] = (size_t)d->max_segments * sizeof(cc__wall_box);        /* the walls' tree */
     sizes[15] = 2 * (size_t)d->max_segments * sizeof(cc__wall_node);
     sizes[16] = (size_t)d->max_segments * sizeof(int32_t);
-    for (k = 0; k < 17; k++) {
+    sizes[17] = cal_nb > 0 ? ((size_t)cal_nb + 1) * sizeof(int32_t) : 0; /* the calendar's buckets */
+    sizes[18] = cal_nb > 0 ? 2 * n * sizeof(int32_t) : 0;               /* and its links */
+    for (k = 0; k < 19; k++) {
         offs[k] = off;
         off += cc__align16(sizes[k]);
     }
@@ -188,6 +191,9 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_wallbox = offs[14];
         w->off_wallnode = offs[15];
         w->off_wallorder = offs[16];
+        w->off_calhead = offs[17];
+        w->off_callink = offs[18];
+        w->cal_nb = cal_nb;
         w->clu_bodies = clu_b;
         w->clu_contacts = clu_c;
     }
@@ -255,6 +261,7 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
         int i;
         for (i = 0; i < d.max_circles; i++)
             hpos[i] = -1;
+        cc__queue_clear(w);
     }
     if (w->use_grid)
         cc__grid_clear(w);
@@ -375,7 +382,7 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
 static void cc__unfile(cc_world *w, int id)
 {
     if (w->mode == CC_MODE_EXACT && !w->dirty) {
-        cc__heap_remove(w, id);
+        cc__queue_remove(w, id);
         cc__grid_remove(w, id);
     }
     CC__ARR(w, cc__body, off_body)[id].count++;

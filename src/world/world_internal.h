@@ -145,6 +145,14 @@ struct cc_world {
     size_t off_wallbox, off_wallnode, off_wallorder; /* the walls' tree (walls.c) */
     int wall_tree_n;                /* walls in the tree; those after it are looked at one by one */
     int clu_bodies, clu_contacts;  /* its capacities; 0 when the world has none */
+    /* EXACT's event calendar in front of the heap (calendar.c); cal_nb = 0: none */
+    size_t off_calhead, off_callink; /* cal_nb + 1 bucket heads (the last: overflow); next, prev */
+    int cal_nb, cal_tuned;           /* buckets (a power of two); whether blocks are in use */
+    int cal_n, cal_over;             /* bodies in the buckets (overflow included), in the overflow */
+    int64_t cal_cur;                 /* the heap holds the blocks up to this one */
+    double cal_w, cal_inv_w, cal_base; /* block width, its inverse, where block 0 begins */
+    double cal_t0;                   /* world time and events when the rate was last measured */
+    uint64_t cal_e0;
 };
 
 #define CC__WORLD_MAGIC 0x63637731u /* "ccw1" */
@@ -296,6 +304,14 @@ void cc__heap_update(cc_world *w, int id, double key); /* insert or move to its 
 void cc__heap_remove(cc_world *w, int id);
 int cc__heap_top(const cc_world *w); /* -1 when empty */
 double cc__heap_top_key(const cc_world *w); /* +INFINITY when empty */
+
+/* ---- calendar.c: EXACT's queue, an event calendar in front of the heap (large worlds) ---- */
+/* Buckets of the calendar of a world of this mode and size (0: none, the heap alone). */
+int cc__calendar_buckets(int mode, int max_circles);
+void cc__queue_update(cc_world *w, int id, double key); /* key: min(ev.t, ev.t_cross), stored */
+void cc__queue_remove(cc_world *w, int id);
+int cc__queue_top(cc_world *w, double *key); /* the earliest body (-1: none) and its key */
+void cc__queue_clear(cc_world *w); /* after the heap was emptied (hpos all -1): buckets emptied */
 
 /* ---- grid.c: hashed uniform cell list ---- */
 void cc__grid_clear(cc_world *w);
