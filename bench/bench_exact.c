@@ -17,6 +17,7 @@
 #define MAX_ROUNDS 32
 
 static volatile double g_sink;
+static double g_cell = 0.0; /* --cell: def.cell_size of the disks' worlds (0: the world's choice) */
 
 /* This process's CPU seconds: on a machine shared with other jobs, the time this process ran
  * (its memory stalls included), not the time it waited for a core. Both sides of each ratio are
@@ -91,6 +92,7 @@ static void disks_make(world_box *b, int n, double phi, uint64_t seed)
     cc_world_def_init(&def);
     def.max_circles = n;
     def.period.x = def.period.y = side;
+    def.cell_size = g_cell;
     b->bytes = cc_world_size(&def);
     b->mem = bench_alloc(b->bytes);
     b->w = cc_world_init(b->mem, b->bytes, &def, NULL);
@@ -262,10 +264,12 @@ int main(int argc, char **argv)
             max_n = atoi(argv[++k]);
         else if (!strcmp(argv[k], "--rounds") && k + 1 < argc)
             rounds = atoi(argv[++k]);
+        else if (!strcmp(argv[k], "--cell") && k + 1 < argc)
+            g_cell = atof(argv[++k]);
         else if (!strcmp(argv[k], "--only") && k + 1 < argc)
             only = argv[++k];
         else {
-            fprintf(stderr, "usage: bench_exact [--quick] [--max-n N] [--rounds R] [--only disks|scaling|scenes|d3|d7|gas|big]\n");
+            fprintf(stderr, "usage: bench_exact [--quick] [--max-n N] [--rounds R] [--only disks|scaling|scenes|d3|d7|gas|big] [--cell S]\n");
             return 2;
         }
     }

@@ -156,6 +156,22 @@ static void cc__cal_rescan(cc_world *w)
     }
 }
 
+/* Body j (>= 0), next in a bucket being poured into the heap: what the pouring reads of it, and
+ * its state, which its event will read soon, asked for while the one before is filed. */
+static inline void cc__cal_prefetch(const cc_world *w, int32_t j)
+{
+#if defined(__GNUC__)
+    if (j >= 0) {
+        __builtin_prefetch(&CC__CARR(w, int32_t, off_callink)[2 * j]);
+        __builtin_prefetch(&CC__CARR(w, cc__event, off_ev)[j]);
+        __builtin_prefetch(&CC__CARR(w, int32_t, off_hpos)[j], 1);
+        __builtin_prefetch(&CC__CARR(w, cc__body, off_body)[j]);
+    }
+#else
+    (void)w, (void)j;
+#endif
+}
+
 /* The heap is empty and the calendar is not: on to the next block that holds anything, its
  * bucket poured into the heap. */
 static void cc__cal_advance(cc_world *w)
@@ -194,6 +210,7 @@ static void cc__cal_advance(cc_world *w)
         b = (int)(w->cal_cur & (int64_t)(w->cal_nb - 1));
         while ((j = head[b]) >= 0) {
             head[b] = link[2 * j];
+            cc__cal_prefetch(w, head[b]);
             hpos[j] = -1;
             w->cal_n--;
             cc__heap_update(w, j, cc__cal_key(w, j));
