@@ -109,7 +109,8 @@ def main():
     scaling = rows(os.path.join(res, "scaling.csv"))
     features = rows(os.path.join(res, "features.csv"))
     figs = {}
-    for name in ("pair.txt", "headline.txt", "features.txt", "scaling.txt", "matrix.txt", "casts.txt", "walls.txt"):
+    for name in ("pair.txt", "headline.txt", "features.txt", "scaling.txt", "matrix.txt", "casts.txt", "walls.txt",
+                 "exact.txt"):
         figs.update(figures(read(os.path.join(res, name))))
     peers = peers_table(read(os.path.join(res, "peers.txt")))
     if matrix:
@@ -322,6 +323,26 @@ def main():
                 w("```")
                 w("")
 
+    # ---- issue 16 (bench_exact): the measured run, then the hand-kept account (bench/exact_notes.md)
+    exact = read(os.path.join(res, "exact.txt"))
+    if exact:
+        w("## 7. EXACT at research speed (issue 16)")
+        w("")
+        w("`bench_exact`: EXACT's cost per collision divided by `cc_sweep`'s cache-resident time per pair, both "
+          "measured in the same round of the same process (CPU time, so that the waits of a shared machine stay "
+          "out); periodic hard disks of diameter 1 (N = 10,000 at area fractions 0.3 and 0.7), the walled gas of "
+          "the headline, N = 10,000 against a large N at 0.3, the pool break and the air-hockey rally. Medians "
+          "over rounds, [min - max].")
+        w("")
+        w("```")
+        w("\n".join(l for l in exact.splitlines() if not l.startswith("figure ")))
+        w("```")
+        w("")
+    notes = read(os.path.join(os.path.dirname(os.path.abspath(__file__)), "exact_notes.md"))
+    if notes:
+        w(notes.rstrip())
+        w("")
+
     w("## How to reproduce")
     w("")
     w("```sh")
@@ -329,6 +350,7 @@ def main():
     w("bench/run.sh --quick    # the headline figures only, under a minute once built")
     w("build-bench/bench/bench_pair --help; build-bench/bench/bench_world matrix|headline|scaling|features")
     w("build-bench/bench/bench_queries casts|walls")
+    w("build-bench/bench/bench_exact [--quick] [--max-n N] [--only disks|scaling|scenes|d3|d7|gas|big]")
     w("```")
     w("")
     with open(os.path.join(docs, "BENCHMARKS.md"), "w") as f:

@@ -34,7 +34,7 @@ fi
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$b2d" \
   -DCC_BUILD_TESTS=OFF -DCC_BUILD_DEMO=OFF >>"$log" 2>&1
-targets=(bench_pair bench_world bench_queries)
+targets=(bench_pair bench_world bench_queries bench_exact)
 grep -q "Box2D found" "$log" && targets+=(bench_box2d_world)
 cmake --build "$build" -j"$jobs" --target "${targets[@]}" >>"$log" 2>&1 || {
   tail -30 "$log" >&2
@@ -49,6 +49,7 @@ if [ $quick = 1 ]; then
   "$bin/bench_world" features --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" casts --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" walls --quick | tee -a "$log" | grep '^figure '
+  "$bin/bench_exact" --quick | tee -a "$log" | grep '^figure '
   echo "(details: $log)"
   exit 0
 fi
@@ -86,6 +87,9 @@ echo "== world: features a scene does not use" | tee -a "$log"
 echo "== queries and walls at scale" | tee -a "$log"
 "$bin/bench_queries" casts | tee "$out/casts.txt"
 "$bin/bench_queries" walls | tee "$out/walls.txt"
+
+echo "== EXACT at research speed (issue 16)" | tee -a "$log"
+"$bin/bench_exact" | tee "$out/exact.txt"
 
 echo "== peers on the gas (n = 1000, phi = 0.3)" | tee -a "$log"
 dt=0.016666666666666666
