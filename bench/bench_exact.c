@@ -151,6 +151,7 @@ typedef struct per_coll {
     double events, crossings, stale, tests; /* per collision */
     size_t bytes;
     int n;
+    uint64_t hash; /* the world's state hash at the end (cc_world_hash): the same events or not */
 } per_coll;
 
 /* Steps of dt until warm collisions (leaving the lattice), then timed steps until `coll` more. */
@@ -178,6 +179,7 @@ static per_coll run_world(world_box *b, int n, double dt, double warm, double co
     r.tests = (double)(s1.pairs_tested - s0.pairs_tested) / c0;
     r.bytes = b->bytes;
     r.n = n;
+    r.hash = cc_world_hash(b->w);
     free(b->mem);
     return r;
 }
@@ -293,6 +295,7 @@ int main(int argc, char **argv)
                      : !strcmp(only, "big") ? disks_run(max_n, 0.3, 2.0, 199)
                                             : disks_run(10000, !strcmp(only, "d3") ? 0.3 : 0.7, 20.0, 99);
         print_counts(only, &r);
+        printf("  state hash at the end: %016llx\n", (unsigned long long)r.hash);
         return 0;
     }
     printf("EXACT at research speed (issue 16): cost per collision / cc_sweep's cache-resident ns per pair\n");
