@@ -293,6 +293,13 @@ static inline int cc__block_within(const cc_world *w, int32_t x0, int32_t y0, in
            (w->ncell[1] == 0 || (y0 >= 0 && y0 + ny <= w->ncell[1]));
 }
 
+/* The only feature a prediction reads is the period (no filters, sensors or rolling): a block
+ * within the period can take the plain scan. */
+static inline int cc__periodic_only(const cc_world *w)
+{
+    return (w->features & CC__F_PREDICT) == CC__F_PERIODIC;
+}
+
 /* Circles filed under the nx x ny cells from (x0, y0), row by row, tested against body i. Within
  * a tile (cc__grid_slot) a row's slots are consecutive and rows are a tile's width apart, so
  * the hash is computed only where a tile begins. One flat loop, the world's fields read once:
@@ -444,11 +451,14 @@ CC__INLINE_ALWAYS uint64_t cc__predict_scan(cc_world *w, int i, cc__cand *best, 
             }
         }
     } else {
-        if (check && feat)
+        /* a periodic world with no other feature, around a cell away from the period's edges:
+         * the plain scan (the same cells, order and pair tests, without the feature branches) */
+        int plain = feat && cc__periodic_only(w) && cc__block_within(w, bi->cx - 1, bi->cy - 1, 3, 3);
+        if (check && feat && !plain)
             cc__scan_block_alone_feat(w, B, i, fixed, bi->cx - 1, bi->cy - 1, best, &tests, al);
         else if (check)
             cc__scan_block_alone(w, B, i, fixed, bi->cx - 1, bi->cy - 1, best, &tests, al);
-        else if (feat)
+        else if (feat && !plain)
             cc__scan_block_feat(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, best, &tests);
         else
             cc__scan_block(w, B, i, fixed, bi->cx - 1, bi->cy - 1, 3, 3, best, &tests);
@@ -548,7 +558,9 @@ void cc__predict_crossed(cc_world *w, int i, int dir)
     best.kind = ev->kind;
     best.partner = ev->partner;
     best.pcount = ev->pcount;
-    if (w->features & CC__F_PREDICT) {
+    if ((w->features & CC__F_PREDICT) &&
+        !(cc__periodic_only(w) && (dir < 2 ? cc__block_within(w, dir == 0 ? cx + 1 : cx - 1, cy - 1, 1, 3)
+                                            : cc__block_within(w, cx - 1, dir == 2 ? cy + 1 : cy - 1, 3, 1)))) {
         if (dir < 2)
             cc__scan_block_feat(w, B, i, fixed, dir == 0 ? cx + 1 : cx - 1, cy - 1, 1, 3, &best, &tests);
         else
