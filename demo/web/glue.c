@@ -27,6 +27,7 @@ WEB_EXPORT cc_world *web_world_init(void *memory, size_t bytes);
 WEB_EXPORT int web_status(void);
 WEB_EXPORT int web_circle_restitution(cc_world *w, int id, double restitution);
 WEB_EXPORT int web_circle_sensor(cc_world *w, int id);
+WEB_EXPORT int web_circle_category(cc_world *w, int id, uint32_t category);
 WEB_EXPORT int web_segment_restitution(cc_world *w, int id, double restitution);
 WEB_EXPORT int web_cast_circle(const cc_world *w, double px, double py, double radius, double dx, double dy,
                                uint32_t mask, cc_cast_hit *out);
@@ -114,6 +115,18 @@ int web_circle_sensor(cc_world *w, int id)
     if (r != CC_OK)
         return r;
     p.sensor = 1;
+    return cc_world_set_circle_props(w, id, &p);
+}
+
+int web_circle_category(cc_world *w, int id, uint32_t category)
+{
+    cc_circle_props p;
+    int r;
+    p.struct_size = sizeof p;
+    r = cc_world_get_circle_props(w, id, &p);
+    if (r != CC_OK)
+        return r;
+    p.category = category;
     return cc_world_set_circle_props(w, id, &p);
 }
 
