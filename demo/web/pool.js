@@ -358,6 +358,12 @@ async function main() {
     version: lib.version(),
     state: () => game.state,
     shots: () => game.shots,
+    cueId: () => game.cue,
+    // where a point of the table is in the window (client coordinates), for synthetic mouse input
+    clientPoint: (x, y) => {
+      const r = canvas.getBoundingClientRect();
+      return { x: r.left + sx(x) * r.width / canvas.width, y: r.top + sy(y) * r.height / canvas.height };
+    },
     potted: () => game.potted.slice(),
     steps: () => game.steps,
     time: () => world.time(),
