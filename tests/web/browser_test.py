@@ -52,6 +52,7 @@ def wait_for(what, predicate, timeout):
 
 
 def main():
+    sys.stdout.reconfigure(line_buffering=True)
     ap = argparse.ArgumentParser()
     ap.add_argument("--replay", required=True, help="the native web_replay program")
     ap.add_argument("--version", required=True, help="the version string the page must show")
@@ -150,7 +151,7 @@ def main():
         for a, b in differ[:5]:
             print("  page:   " + a + "\n  native: " + b)
     else:
-        print("determinism: the native replay of %d calls matches the page bit for bit "
+        print("determinism: the native replay of the %d journal lines matches the page bit for bit "
               "(world time, hash, position and velocity of %d circles): %s"
               % (len(journal.splitlines()), len(page_lines) - 2, page_lines[1]))
     print("browser test: %.1f s; screenshot %s" % (time.monotonic() - t_start, os.path.join(args.out, "pool.png")))
