@@ -23,7 +23,6 @@ import time
 from selenium import webdriver
 from selenium.webdriver.chrome.options import Options
 from selenium.webdriver.chrome.service import Service
-from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.actions.action_builder import ActionBuilder
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -109,8 +108,17 @@ def main():
         print("balls at rest after %.1f s of world time (%.1f s in the browser, %d steps); potted: %s"
               % (driver.execute_script("return ccPage.time()"), time.monotonic() - t_shot,
                  driver.execute_script("return ccPage.steps()"), driver.execute_script("return ccPage.potted()")))
-        # a last mouse move, so that the screenshot shows the next aim
-        ActionChains(driver).move_to_element_with_offset(driver.find_element("id", "table"), -200, -60).perform()
+        # the mouse on the ball nearest the cue ball, so that the screenshot shows the next aim:
+        # the aiming line, the ghost ball and the object ball's path
+        target = driver.execute_script("""
+            const cue = ccPage.balls().find(b => b.id === ccPage.cueId());
+            const others = ccPage.balls().filter(b => b.id !== ccPage.cueId());
+            others.sort((a, b) => Math.hypot(a.x - cue.x, a.y - cue.y) - Math.hypot(b.x - cue.x, b.y - cue.y));
+            return others.length ? ccPage.clientPoint(others[0].x, others[0].y) : null;""")
+        if target:
+            move = ActionBuilder(driver)
+            move.pointer_action.move_to_location(round(target["x"]), round(target["y"]))
+            move.perform()
         time.sleep(0.2)
 
         after = {b["id"]: b for b in driver.execute_script("return ccPage.balls()")}
