@@ -6,7 +6,7 @@
 # With --sizes it also prints the module sizes (raw and gzip -9) of the pair functions alone,
 # the whole library and the page's module, at -O2 and -Os (into build/wasm/sizes.txt too). The math and string functions the
 # library needs come from demo/wasm/ (include/ maps sqrt, fabs, floor, ceil to WebAssembly
-# instructions; libc.c has memcpy, memmove, memset, frexp, ldexp). Environment: CC (clang),
+# instructions; libc.c has memcpy, memset, frexp, ldexp). Environment: CC_WASM_CC (clang),
 # WASM_LD (wasm-ld), CC_WASM_OUT (build/wasm).
 set -euo pipefail
 sizes_too=0

@@ -1,7 +1,8 @@
 /* The few C library functions the freestanding WebAssembly build needs, since no libc is
- * linked (scripts/wasm.sh): memcpy, memmove and memset (called by the library and by the
- * compiler for structure copies), frexp and ldexp in double and float (the library's exact
+ * linked (scripts/wasm.sh): memcpy (called by the library and by the compiler for structure
+ * copies) and memset, frexp and ldexp in double and float (the library's exact
  * power-of-two scaling of very large or small inputs; WebAssembly has no instruction for them).
+ * Nothing calls memmove (the linked module shows it), so there is none.
  * sqrt, fabs, floor and ceil are instructions (demo/wasm/include/math.h).
  *
  * Every result is exact or, for ldexp into the subnormal range, rounded once to nearest even,
@@ -16,7 +17,6 @@
 #endif
 
 void *CC_WASM_LIBC_NAME(memcpy)(void *restrict dst, const void *restrict src, size_t n);
-void *CC_WASM_LIBC_NAME(memmove)(void *dst, const void *src, size_t n);
 void *CC_WASM_LIBC_NAME(memset)(void *dst, int c, size_t n);
 double CC_WASM_LIBC_NAME(frexp)(double x, int *e);
 float CC_WASM_LIBC_NAME(frexpf)(float x, int *e);
@@ -29,20 +29,6 @@ void *CC_WASM_LIBC_NAME(memcpy)(void *restrict dst, const void *restrict src, si
     const unsigned char *s = (const unsigned char *)src;
     while (n--)
         *d++ = *s++;
-    return dst;
-}
-
-void *CC_WASM_LIBC_NAME(memmove)(void *dst, const void *src, size_t n)
-{
-    unsigned char *d = (unsigned char *)dst;
-    const unsigned char *s = (const unsigned char *)src;
-    if (d < s) {
-        while (n--)
-            *d++ = *s++;
-    } else if (d > s) {
-        while (n--)
-            d[n] = s[n];
-    }
     return dst;
 }
 

@@ -1,4 +1,4 @@
-/* string.h for the freestanding WebAssembly build: the three functions the library and the
+/* string.h for the freestanding WebAssembly build: the two functions the library and the
  * compiler (structure copies) call, defined in demo/wasm/libc.c. */
 #ifndef CC_WASM_STRING_H
 #define CC_WASM_STRING_H
@@ -6,7 +6,6 @@
 #include <stddef.h>
 
 void *memcpy(void *restrict dst, const void *restrict src, size_t n);
-void *memmove(void *dst, const void *src, size_t n);
 void *memset(void *dst, int c, size_t n);
 
 #endif
