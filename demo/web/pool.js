@@ -46,7 +46,7 @@ let flashes = []; // contact flashes: {x, y, t0, strength}
 const pendingPockets = new Set(); // ball ids over a hole during the last step (sensor callback)
 
 function newGame() {
-  world.init(); // the same memory: the world is reserved once
+  if (game) world.init(); // a reset: a new world in the same memory (reserved once, at start)
   game = {
     numbers: new Map(), // ball id -> number (0: cue)
     cue: -1,

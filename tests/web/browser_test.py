@@ -6,6 +6,7 @@ Serves demo/web/ on 127.0.0.1 (a free port), loads the page and checks:
   - a shot fired through the page's own mouse handlers (press on the aim point, pull back,
     release) sets balls moving, and they all come to rest;
   - no console message of level SEVERE (console.error, an uncaught exception, a failed load);
+  - the reset button brings a new rack (after the state below is taken);
   - determinism across targets: the page's journal (every call that changed the world) replayed
     by the native library (web_replay, tests/web/replay.c) gives the same world time, the same
     cc_world_hash and the same position and velocity of every circle, bit for bit.
@@ -134,6 +135,11 @@ def main():
         driver.save_screenshot(os.path.join(args.out, "pool.png"))
         journal = driver.execute_script("return ccPage.journal()")
         page_state = driver.execute_script("return ccPage.worldState()")
+        # the reset button: a new rack in the same memory, nothing potted, the cue ball back
+        driver.find_element("id", "reset").click()
+        wait_for("the reset", lambda: driver.execute_script(
+            "return ccPage.shots() === 0 && ccPage.potted().length === 0 && ccPage.balls().length === 16"), 5)
+        print("reset: a new rack of 15 and the cue ball")
         severe = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
         for e in severe:
             failures.append("console: %s" % e.get("message"))
