@@ -191,8 +191,9 @@ function aimAt(p) {
   if (d > 1e-6) game.aim = { x: dx / d, y: dy / d };
 }
 
+// (each handler waits for the module: before it loads there is no game)
 canvas.addEventListener("mousedown", (ev) => {
-  if (game.state !== "aim" || ev.button !== 0) return;
+  if (!game || game.state !== "aim" || ev.button !== 0) return;
   const p = tablePoint(ev);
   aimAt(p);
   game.state = "pull";
@@ -202,6 +203,7 @@ canvas.addEventListener("mousedown", (ev) => {
 });
 
 window.addEventListener("mousemove", (ev) => {
+  if (!game) return;
   const p = tablePoint(ev);
   game.mouse = p;
   if (game.state === "aim") {
@@ -214,14 +216,14 @@ window.addEventListener("mousemove", (ev) => {
 });
 
 window.addEventListener("mouseup", (ev) => {
-  if (game.state !== "pull" || ev.button !== 0) return;
+  if (!game || game.state !== "pull" || ev.button !== 0) return;
   const speed = MAX_SPEED * game.pull / MAX_PULL;
   game.pull = 0;
   if (speed > 0.05) shoot(speed);
   else game.state = "aim";
 });
 
-document.getElementById("reset").addEventListener("click", () => newGame());
+document.getElementById("reset").addEventListener("click", () => game && newGame());
 
 // ---- drawing ----
 function disc(x, y, r, fill) {
