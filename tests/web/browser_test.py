@@ -3,8 +3,8 @@
 
 Serves demo/web/ on 127.0.0.1 (a free port), loads the page and checks:
   - the WebAssembly module loaded and the version string shown is the header's;
-  - a shot fired through the page's own mouse handlers (press on the aim point, pull back,
-    release) sets balls moving, and they all come to rest;
+  - two shots fired through the page's own mouse handlers (press on the aim point, pull back,
+    release): the break sets balls moving, and after each shot they all come to rest;
   - no console message of level SEVERE (console.error, an uncaught exception, a failed load);
   - the reset button brings a new rack (after the state below is taken);
   - determinism across targets: the page's journal (every call that changed the world) replayed
@@ -84,53 +84,68 @@ def main():
         if shown != expected:
             failures.append("version string %r, expected %r" % (shown, expected))
 
-        before = {b["id"]: b for b in driver.execute_script("return ccPage.balls()")}
-        # the shot: the cue ball aimed at the apex ball, pressed there, pulled back 0.4 m along
-        # the aim (0.4 / 0.45 of full power: 8 m/s, the demo's break), released
-        cue = driver.execute_script("return ccPage.balls().find(b => b.id === ccPage.cueId())")
-        aim = (0.75 * 2.54, 0.5 * 1.27)
-        d = ((aim[0] - cue["x"]) ** 2 + (aim[1] - cue["y"]) ** 2) ** 0.5
-        u = ((aim[0] - cue["x"]) / d, (aim[1] - cue["y"]) / d)
-        pulled = (aim[0] - 0.4 * u[0], aim[1] - 0.4 * u[1])
-        p0 = driver.execute_script("return ccPage.clientPoint(arguments[0], arguments[1])", *aim)
-        p1 = driver.execute_script("return ccPage.clientPoint(arguments[0], arguments[1])", *pulled)
-        actions = ActionBuilder(driver)
-        actions.pointer_action.move_to_location(round(p0["x"]), round(p0["y"]))
-        actions.pointer_action.pointer_down()
-        for k in range(1, 6):
-            actions.pointer_action.move_to_location(round(p0["x"] + (p1["x"] - p0["x"]) * k / 5),
-                                                    round(p0["y"] + (p1["y"] - p0["y"]) * k / 5))
-        actions.pointer_action.pointer_up()
-        actions.perform()
-        wait_for("the shot (ccPage.shots() == 1)", lambda: driver.execute_script("return ccPage.shots()") == 1, 5)
-        t_shot = time.monotonic()
-        wait_for("every ball at rest", lambda: driver.execute_script(
-            "return ccPage.state() === 'aim' && ccPage.shots() === 1"), 40)
-        print("balls at rest after %.1f s of world time (%.1f s in the browser, %d steps); potted: %s"
-              % (driver.execute_script("return ccPage.time()"), time.monotonic() - t_shot,
-                 driver.execute_script("return ccPage.steps()"), driver.execute_script("return ccPage.potted()")))
-        # the mouse on the ball nearest the cue ball, so that the screenshot shows the next aim:
-        # the aiming line, the ghost ball and the object ball's path
-        target = driver.execute_script("""
-            const cue = ccPage.balls().find(b => b.id === ccPage.cueId());
-            const others = ccPage.balls().filter(b => b.id !== ccPage.cueId());
-            others.sort((a, b) => Math.hypot(a.x - cue.x, a.y - cue.y) - Math.hypot(b.x - cue.x, b.y - cue.y));
-            return others.length ? ccPage.clientPoint(others[0].x, others[0].y) : null;""")
-        if target:
-            move = ActionBuilder(driver)
-            move.pointer_action.move_to_location(round(target["x"]), round(target["y"]))
-            move.perform()
-        time.sleep(0.2)
+        def client(x, y):
+            return driver.execute_script("return ccPage.clientPoint(arguments[0], arguments[1])", x, y)
 
+        def nearest_ball():
+            """the table point of the object ball nearest the cue ball"""
+            return driver.execute_script("""
+                const cue = ccPage.balls().find(b => b.id === ccPage.cueId());
+                const others = ccPage.balls().filter(b => b.id !== ccPage.cueId());
+                others.sort((a, b) => Math.hypot(a.x - cue.x, a.y - cue.y) - Math.hypot(b.x - cue.x, b.y - cue.y));
+                return [others[0].x, others[0].y];""")
+
+        def shoot(aim, pull, number):
+            """the page's own mouse handlers: press on the aim point, pull back `pull` metres
+            along the aim in five moves, release; then wait until every ball rests"""
+            cue = driver.execute_script("return ccPage.balls().find(b => b.id === ccPage.cueId())")
+            d = ((aim[0] - cue["x"]) ** 2 + (aim[1] - cue["y"]) ** 2) ** 0.5
+            u = ((aim[0] - cue["x"]) / d, (aim[1] - cue["y"]) / d)
+            p0, p1 = client(*aim), client(aim[0] - pull * u[0], aim[1] - pull * u[1])
+            actions = ActionBuilder(driver)
+            actions.pointer_action.move_to_location(round(p0["x"]), round(p0["y"]))
+            actions.pointer_action.pointer_down()
+            for k in range(1, 6):
+                actions.pointer_action.move_to_location(round(p0["x"] + (p1["x"] - p0["x"]) * k / 5),
+                                                        round(p0["y"] + (p1["y"] - p0["y"]) * k / 5))
+            actions.pointer_action.pointer_up()
+            actions.perform()
+            wait_for("shot %d (ccPage.shots() == %d)" % (number, number),
+                     lambda: driver.execute_script("return ccPage.shots()") == number, 5)
+            t_shot = time.monotonic()
+            wait_for("every ball at rest after shot %d" % number, lambda: driver.execute_script(
+                "return ccPage.state() === 'aim' && ccPage.shots() === arguments[0]", number), 40)
+            print("shot %d: balls at rest at %.1f s of world time (%.1f s in the browser, %d steps in all); "
+                  "potted: %s" % (number, driver.execute_script("return ccPage.time()"), time.monotonic() - t_shot,
+                                  driver.execute_script("return ccPage.steps()"),
+                                  driver.execute_script("return ccPage.potted()")))
+
+        def check_rest(what):
+            rolling = [b["id"] for b in driver.execute_script("return ccPage.balls()") if b["vx"] != 0 or b["vy"] != 0]
+            if rolling:
+                failures.append("%s: balls still moving: %s" % (what, rolling))
+
+        before = {b["id"]: b for b in driver.execute_script("return ccPage.balls()")}
+        # the break: aimed at the apex ball, pulled back 0.4 m (0.4 / 0.45 of full power: 8 m/s,
+        # the demo's break)
+        shoot((0.75 * 2.54, 0.5 * 1.27), 0.4, 1)
         after = {b["id"]: b for b in driver.execute_script("return ccPage.balls()")}
         moved = sum(1 for i, b in before.items()
                     if i not in after or (after[i]["x"], after[i]["y"]) != (b["x"], b["y"]))
-        print("balls moved (or potted): %d of %d" % (moved, len(before)))
+        print("balls moved (or potted) by the break: %d of %d" % (moved, len(before)))
         if moved < 8:
             failures.append("only %d balls moved" % moved)
-        rolling = [i for i, b in after.items() if b["vx"] != 0 or b["vy"] != 0]
-        if rolling:
-            failures.append("balls still moving: %s" % rolling)
+        check_rest("after the break")
+        # a second shot, at the ball nearest the cue ball (5 m/s)
+        shoot(nearest_ball(), 0.25, 2)
+        check_rest("after the second shot")
+        # the mouse on the nearest ball again, so that the screenshot shows the next aim: the
+        # aiming line, the ghost ball and the object ball's path
+        target = client(*nearest_ball())
+        move = ActionBuilder(driver)
+        move.pointer_action.move_to_location(round(target["x"]), round(target["y"]))
+        move.perform()
+        time.sleep(0.2)
 
         driver.save_screenshot(os.path.join(args.out, "pool.png"))
         journal = driver.execute_script("return ccPage.journal()")
