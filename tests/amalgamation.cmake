@@ -17,7 +17,7 @@ add_custom_command(OUTPUT ${_amal}/circlecollide.c ${_amal}/circlecollide.h
           ${PROJECT_SOURCE_DIR}/scripts/amalgamate.py
   COMMENT "Writing the amalgamation (scripts/amalgamate.py)" VERBATIM)
 # the C++ compile includes the very same file
-file(WRITE ${_amal}/cxx/circlecollide.cpp "#include \"../circlecollide.c\"\n")
+file(CONFIGURE OUTPUT ${_amal}/cxx/circlecollide.cpp CONTENT "#include \"../circlecollide.c\"\n")
 set_source_files_properties(${_amal}/cxx/circlecollide.cpp PROPERTIES OBJECT_DEPENDS ${_amal}/circlecollide.c)
 
 set(_amal_flags "")
