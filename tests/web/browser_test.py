@@ -7,6 +7,7 @@ Serves demo/web/ on 127.0.0.1 (a free port), loads the page and checks:
     release): the break sets balls moving, and after each shot they all come to rest;
   - no console message of level SEVERE (console.error, an uncaught exception, a failed load);
   - the reset button brings a new rack (after the state below is taken);
+  - every resource the page loaded came from the local server;
   - determinism across targets: the page's journal (every call that changed the world) replayed
     by the native library (web_replay, tests/web/replay.c) gives the same world time, the same
     cc_world_hash and the same position and velocity of every circle, bit for bit.
@@ -155,6 +156,13 @@ def main():
         wait_for("the reset", lambda: driver.execute_script(
             "return ccPage.shots() === 0 && ccPage.potted().length === 0 && ccPage.balls().length === 16"), 5)
         print("reset: a new rack of 15 and the cue ball")
+        # nothing fetched from elsewhere: every resource the page loaded came from our server
+        origin = "http://127.0.0.1:%d/" % server.server_address[1]
+        loaded = driver.execute_script("return performance.getEntriesByType('resource').map(e => e.name)")
+        foreign = [u for u in loaded if not u.startswith(origin)]
+        print("resources loaded: %s" % ", ".join(sorted(u[len(origin):] for u in loaded if u.startswith(origin))))
+        if foreign:
+            failures.append("fetched from elsewhere: %s" % foreign)
         severe = [e for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
         for e in severe:
             failures.append("console: %s" % e.get("message"))
