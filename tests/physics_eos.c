@@ -273,11 +273,11 @@ static void run_eos(int n, const double *etas, int neta, double equil, int nb, d
 {
     int e, b;
     printf("# N\teta\tZ\tZ_err\tZ_err_B/2\tZ_KR\tZ_H\tZ_Engel_coex\tdev_KR_%%\tdev_sigma\tpsi6\tpsi6_sd\t"
-           "impacts\tcpu_s\n");
+           "impacts\tcpu_s\tZ_1st_half\tZ_2nd_half\n");
     fflush(stdout);
     for (e = 0; e < neta; e++) {
         double eta = etas[e], zb[MAXBLOCKS], wb[MAXBLOCKS], tb[MAXBLOCKS], z2[MAXBLOCKS / 2], ps[MAXBLOCKS];
-        double rate, t0, tblock, wsum = 0.0, tsum = 0.0, z, err, err2, zkr, psi = 0.0, cpu0 = (double)clock();
+        double rate, t0, tblock, zh1, zh2, wsum = 0.0, tsum = 0.0, z, err, err2, zkr, psi = 0.0, cpu0 = (double)clock();
         cc_world_stats a, c;
         sim s;
         rng_state = g_seed * 0x9E3779B97F4A7C15ull + 1000003u * (uint64_t)(1 + e) + (uint64_t)(eta * 1e4) + 77u * (uint64_t)n;
@@ -310,11 +310,25 @@ static void run_eos(int n, const double *etas, int neta, double equil, int nb, d
         err = sd_of(zb, nb) / sqrt((double)nb);
         err2 = nb >= 4 ? sd_of(z2, nb / 2) / sqrt((double)(nb / 2)) : NAN;
         zkr = z_kolafa_rottner(eta);
+        {   /* Z over the first and the second half of the blocks: a drift shows unfinished equilibration */
+            double w1 = 0.0, t1 = 0.0, w2 = 0.0, t2 = 0.0;
+            for (b = 0; b < nb; b++) {
+                if (2 * b < nb) {
+                    w1 += wb[b];
+                    t1 += tb[b];
+                } else {
+                    w2 += wb[b];
+                    t2 += tb[b];
+                }
+            }
+            zh1 = 1.0 + w1 / (2.0 * t1 * n * KT);
+            zh2 = 1.0 + w2 / (2.0 * t2 * n * KT);
+        }
         c = stats_of(s.w);
-        printf("%d\t%.4f\t%.5f\t%.5f\t%.5f\t%.5f\t%.5f\t%.5f\t%+.3f\t%+.1f\t%.3f\t%.3f\t%llu\t%.1f\n", n, eta, z, err,
+        printf("%d\t%.4f\t%.5f\t%.5f\t%.5f\t%.5f\t%.5f\t%.5f\t%+.3f\t%+.1f\t%.3f\t%.3f\t%llu\t%.1f\t%.5f\t%.5f\n", n, eta, z, err,
                err2, zkr, z_henderson(eta), z_engel_coexistence(eta), 100.0 * (z / zkr - 1.0),
                (z - zkr) / fmax(err, err2 == err2 ? err2 : 0.0), psi / nb, sd_of(ps, nb),
-               (unsigned long long)c.collisions, ((double)clock() - cpu0) / CLOCKS_PER_SEC);
+               (unsigned long long)c.collisions, ((double)clock() - cpu0) / CLOCKS_PER_SEC, zh1, zh2);
         fflush(stdout);
         sim_free(&s);
     }
