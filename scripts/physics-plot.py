@@ -130,7 +130,7 @@ def main():
     top = Panel(80, 40, 500, 390, (0.0, 0.75), (0.0, 14.0))
     zoom = Panel(660, 40, 310, 390, (0.62, 0.725), (7.0, 11.5))
     bot = Panel(80, 500, 890, 210, (0.0, 0.75), (-0.6, 1.0))
-    xs = [i / 4000.0 * 0.75 for i in range(1, 4001)]
+    xs = [i / 1500.0 * 0.75 for i in range(1, 1501)]
     o = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="12">\n'
          % (W, H), '<rect width="100%" height="100%" fill="#fff"/>\n']
     o.append('<text x="%d" y="22" text-anchor="middle" font-size="14">Hard disks in a periodic box: '
