@@ -1,6 +1,6 @@
 /* Physics validation (issue 15): the world, in EXACT mode on a periodic square box, simulates a
- * hard-disk fluid correctly. N = 400 equal disks (radius 0.5, mass 1) at area fractions 0.1, 0.3
- * and 0.5, started on a square lattice with all speeds equal (random directions, zero total
+ * hard-disk fluid correctly. N = 400 equal disks (radius 0.5, mass 1) at area fractions 0.1, 0.3,
+ * 0.5 and 0.65, started on a square lattice with all speeds equal (random directions, zero total
  * momentum, total kinetic energy N kT with kT = 1), equilibrated, then measured over blocks:
  *   1. equation of state: Z = P A / (N kT) from the virial (cc_world_stats.virial) against
  *      Kolafa and Rottner's fit to the simulated hard-disk EOS, within max(4 sigma, 0.3 %)
