@@ -14,6 +14,9 @@
 #   scripts/physics-report.sh long [outdir]
 #       1e7 impacts at eta 0.5 with N = 4000 and N = 1000: kinetic energy, momentum and centre of
 #       mass every 1e6 impacts, and the rounding model of the energy drift. About 1 minute.
+#   scripts/physics-report.sh vacf [outdir]
+#       The velocity autocorrelation at eta 0.3 and 0.5 (N = 1600) against Enskog's exponential,
+#       and the running diffusion coefficient. About 30 s.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=${CC_BUILD_DIR:-$root/build-physics}
@@ -71,8 +74,16 @@ long)
     "$eos" long --n "$n" --eta 0.5 --collisions 1e7 --every 1e6 | tee "$out/long_n$n.tsv"
   done
   ;;
+vacf)
+  out=${1:-$root/docs/physics}
+  mkdir -p "$out"
+  for eta in 0.3 0.5; do
+    echo "== physics_eos vacf --n 1600 --eta $eta --lags 160 --origins 4000 > $out/vacf_n1600_eta$eta.tsv"
+    "$eos" vacf --n 1600 --eta "$eta" --lags 160 --origins 4000 | tee "$out/vacf_n1600_eta$eta.tsv"
+  done
+  ;;
 *)
-  echo "usage: $0 [test] [blocks] [per-block] | eos [outdir] | long [outdir]" >&2
+  echo "usage: $0 [test] [blocks] [per-block] | eos [outdir] | long [outdir] | vacf [outdir]" >&2
   exit 2
   ;;
 esac

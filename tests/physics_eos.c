@@ -390,6 +390,69 @@ static void run_long(int n, double eta, double total, double every)
     sim_free(&s);
 }
 
+/* ---- vacf ---- */
+
+/* The velocity autocorrelation C(t) = <v(0).v(t)> / <v.v> after 200 collisions per disk of
+ * equilibration: snapshots every dt = (1/8) mean free time, correlated with the `lags` before
+ * them, `origins` time origins. Printed beside the Enskog exponential exp(-Gamma t) (in 2D the
+ * first Enskog approximation relaxes a disk's velocity at the collision rate: D_E = (kT/m) /
+ * Gamma_E), with the running diffusion coefficient D(t) = (kT/m) integral_0^t C over D_E. */
+static void run_vacf(int n, double eta, int lags, int origins)
+{
+    sim s;
+    double *ring, *acc, rate, dt, t0, c0 = 0.0, integral = 0.0;
+    int k, j, i, filled = 0;
+    cc_world_stats a, c;
+    rng_state = g_seed * 0x9E3779B97F4A7C15ull + 999u + (uint64_t)n;
+    sim_make(&s, n, eta);
+    rate = 4.0 * (z_henderson(eta) - 1.0) * sqrt(KT / M_PI);
+    run_impacts(&s, 100.0 * n, rate);
+    a = stats_of(s.w);
+    t0 = cc_world_time(s.w);
+    run_impacts(&s, 100.0 * n, rate);
+    c = stats_of(s.w);
+    rate = 2.0 * (double)(c.collisions - a.collisions) / (n * (cc_world_time(s.w) - t0)); /* measured */
+    dt = 0.125 / rate;
+    ring = (double *)malloc((size_t)(lags + 1) * 2 * (size_t)n * sizeof *ring);
+    acc = (double *)calloc((size_t)(lags + 1), sizeof *acc);
+    if (ring == NULL || acc == NULL)
+        die("out of memory");
+    for (k = 0; k < origins + lags; k++) {
+        double *cur = ring + (size_t)(k % (lags + 1)) * 2 * (size_t)n;
+        read_circles(&s);
+        for (i = 0; i < n; i++) {
+            cur[2 * i] = s.c[i].vel.x;
+            cur[2 * i + 1] = s.c[i].vel.y;
+        }
+        filled = k + 1 < lags + 1 ? k + 1 : lags + 1;
+        if (k >= lags) /* a full window: correlate the oldest with every later one */
+            for (j = 0; j <= lags; j++) {
+                const double *o = ring + (size_t)((k - lags) % (lags + 1)) * 2 * (size_t)n;
+                const double *v = ring + (size_t)((k - lags + j) % (lags + 1)) * 2 * (size_t)n;
+                double sum = 0.0;
+                for (i = 0; i < 2 * n; i++)
+                    sum += o[i] * v[i];
+                acc[j] += sum;
+            }
+        step(&s, dt);
+    }
+    (void)filled;
+    c0 = acc[0];
+    printf("# N %d, eta %.3f: collision rate per disk %.5f (Enskog with Kolafa-Rottner's Z: %.5f), dt = %.5f = "
+           "1/8 mean free time, %d origins\n",
+           n, eta, rate, 4.0 * (z_kolafa_rottner(eta) - 1.0) * sqrt(KT / M_PI), dt, origins);
+    printf("# t_Gamma\tC(t)/C(0)\texp(-Gamma t)\tD(t)/D_E\n");
+    for (j = 0; j <= lags; j++) {
+        if (j > 0)
+            integral += 0.5 * (acc[j - 1] + acc[j]) / c0 * dt; /* trapezoid, in units of C(0) */
+        if (j % 4 == 0)
+            printf("%.3f\t%.5f\t%.5f\t%.4f\n", j * dt * rate, acc[j] / c0, exp(-j * dt * rate), integral * rate);
+    }
+    free(ring);
+    free(acc);
+    sim_free(&s);
+}
+
 static int parse_list(const char *arg, double *out, int cap)
 {
     int k = 0;
@@ -409,9 +472,10 @@ int main(int argc, char **argv)
 {
     int n = 400, nb = 20, neta = 0, i, mode;
     double etas[MAXETA], equil = 200.0, per_block = 500.0, total = 1e7, every = 1e6;
-    if (argc < 2 || (strcmp(argv[1], "eos") && strcmp(argv[1], "long")))
+    int lags = 160, origins = 4000;
+    if (argc < 2 || (strcmp(argv[1], "eos") && strcmp(argv[1], "long") && strcmp(argv[1], "vacf")))
         goto usage;
-    mode = !strcmp(argv[1], "long");
+    mode = !strcmp(argv[1], "long") ? 1 : !strcmp(argv[1], "vacf") ? 2 : 0;
     for (i = 2; i < argc; i++) {
         if (!strcmp(argv[i], "--n") && i + 1 < argc)
             n = atoi(argv[++i]);
@@ -427,6 +491,10 @@ int main(int argc, char **argv)
             total = atof(argv[++i]);
         else if (!strcmp(argv[i], "--every") && i + 1 < argc)
             every = atof(argv[++i]);
+        else if (!strcmp(argv[i], "--lags") && i + 1 < argc)
+            lags = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--origins") && i + 1 < argc)
+            origins = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--seed") && i + 1 < argc)
             g_seed = (uint64_t)strtoull(argv[++i], NULL, 10);
         else
@@ -442,7 +510,11 @@ int main(int argc, char **argv)
     for (i = 0; i < neta; i++)
         if (!(etas[i] > 0.0 && etas[i] < 0.78))
             goto usage;
-    if (mode)
+    if (lags < 1 || origins < 1)
+        goto usage;
+    if (mode == 2)
+        run_vacf(n, etas[0], lags, origins);
+    else if (mode == 1)
         run_long(n, etas[0], total, every);
     else
         run_eos(n, etas, neta, equil, nb, per_block);
@@ -450,7 +522,8 @@ int main(int argc, char **argv)
 usage:
     fprintf(stderr,
             "usage: %s eos [--n N] [--eta e1,e2,...] [--equil C] [--blocks B (2..%d)] [--per-block C]\n"
-            "       %s long [--n N] [--eta E] [--collisions C] [--every C]\n",
-            argv[0], MAXBLOCKS, argv[0]);
+            "       %s long [--n N] [--eta E] [--collisions C] [--every C]\n"
+            "       %s vacf [--n N] [--eta E] [--lags K] [--origins M]\n",
+            argv[0], MAXBLOCKS, argv[0], argv[0]);
     return 2;
 }
