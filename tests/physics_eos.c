@@ -10,6 +10,9 @@
  *       Conservation over a long run: relative kinetic-energy change, momentum and the centre of
  *       mass of the unwrapped positions every C collisions; and the rounding model of the energy
  *       drift (the mean and spread of |n|^2 - 1 for a normal made as the library makes it).
+ *   physics_eos vacf [--n N] [--eta E] [--lags K] [--origins M] [--seed S]
+ *       The velocity autocorrelation against Enskog's exponential, and the running diffusion
+ *       coefficient over Enskog's.
  *
  * C counts collisions per disk for eos (each impact involves two disks) and impacts for long.
  * docs/PHYSICS.md gives the formulas, the literature values and the figures. */
