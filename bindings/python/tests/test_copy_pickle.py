@@ -177,3 +177,18 @@ def test_unpickling_refuses_another_library():
     with pytest.raises(ValueError, match="hash"):
         fn(dict(state, hash=wrong.hash()))
     assert fn(dict(state, memory=bytes(m))).hash() == w.hash()
+
+
+def test_deepcopy_of_a_callback_that_refers_to_its_world_refers_to_the_copy():
+    class Counter:
+        def __init__(self):
+            self.world, self.n = None, 0
+
+        def __call__(self, e):
+            self.n += 1
+
+    k = Counter()
+    w = gas(callbacks=True)
+    w.on_contact, k.world = k, w
+    c = copy.deepcopy(w)
+    assert c.on_contact is not k and c.on_contact.world is c

@@ -314,7 +314,11 @@ class World:
     def __deepcopy__(self, memo: Dict[int, Any]) -> "World":
         """``copy.deepcopy``: as ``copy.copy``, with the callbacks deep-copied too (functions
         stay themselves, bound methods get a deep copy of their object)."""
-        return self._clone(_copy.deepcopy(self._on_contact, memo), _copy.deepcopy(self._on_sensor, memo))
+        new = self._clone(None, None)
+        memo[id(self)] = new  # a callback that refers back to this world gets the copy
+        new._on_contact = _copy.deepcopy(self._on_contact, memo)
+        new._on_sensor = _copy.deepcopy(self._on_sensor, memo)
+        return new
 
     def copy(self) -> "World":
         """Same as ``copy.copy(world)``: an independent world in the same state."""
