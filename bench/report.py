@@ -322,6 +322,23 @@ def main():
                 w("```")
                 w("")
 
+    # ---- the Python path (bench/python_path.py)
+    py = read(os.path.join(res, "python_path.txt"))
+    if py:
+        w("## 7. The Python path")
+        w("")
+        w("`bench/python_path.py`: the gas of section 4 at N = 10,000 stepped from Python (one `World.step` "
+          "call a frame, then also reading `World.positions` every frame) against `bench_world peer` in C, "
+          "and one pair-function call from Python against the C function and the Python peers' "
+          "equivalents (billiards' `time_of_impact` answers what `sweep` does; pymunk's "
+          "`shapes_collide` what `detect_static` does). Each round measures every row; ratios are per "
+          "round, median [min, max]. Python runs the same library build (CIRCLECOLLIDE_LIBRARY).")
+        w("")
+        w("```")
+        w("\n".join(l for l in py.splitlines() if not l.startswith("figure ")))
+        w("```")
+        w("")
+
     w("## How to reproduce")
     w("")
     w("```sh")
@@ -329,6 +346,8 @@ def main():
     w("bench/run.sh --quick    # the headline figures only, under a minute once built")
     w("build-bench/bench/bench_pair --help; build-bench/bench/bench_world matrix|headline|scaling|features")
     w("build-bench/bench/bench_queries casts|walls")
+    w("CIRCLECOLLIDE_LIBRARY=build-bench/src/libcirclecollide.so PYTHONPATH=bindings/python/src \\")
+    w("  build-bench/venv/bin/python bench/python_path.py build-bench/bench   # section 7")
     w("```")
     w("")
     with open(os.path.join(docs, "BENCHMARKS.md"), "w") as f:

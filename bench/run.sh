@@ -99,6 +99,13 @@ dt=0.016666666666666666
 } 2>>"$log" | tee "$out/peers.txt"
 rm -f "$out"/trace-*.bin
 
+echo "== the Python path (bench/python_path.py)" | tee -a "$log"
+# the binding from the source tree on this build's shared library: Python and C run the same code
+cmake --build "$build" -j"$jobs" --target circlecollide >>"$log" 2>&1
+CIRCLECOLLIDE_LIBRARY=$(ls "$build"/src/libcirclecollide.so* | head -1) PYTHONPATH=$root/bindings/python/src \
+  "$venv/bin/python" "$root/bench/python_path.py" "$bin" 2>>"$log" | tee "$out/python_path.txt" ||
+  echo "bench: the Python path did not run (see $log)" >&2
+
 "$venv/bin/python" "$root/bench/report.py" "$out" "$root/docs" "bench/run.sh"
 grep -h '^figure ' "$out"/*.txt
 echo "wrote docs/BENCHMARKS.md"
