@@ -1,7 +1,10 @@
 /* Prints the accuracy table of docs/NUMERICS.md: per corpus class and precision, the library's
  * sweeps and the textbook formula against the exact reference.
  *
- *   numerics_report [--seed S] [--count N] [--double | --float] [--no-textbook] [--check]
+ *   numerics_report [--seed S] [--count N] [--double | --float] [--straight | --rolling] [--no-textbook] [--check]
+ *
+ * Two tables: the straight sweeps' classes, then rolling to rest's (cc_sweep_rolling and
+ * cc_sweep_segment_rolling against the MPFR reference, the textbook quartic beside them).
  *
  *   numerics_report --show CLASS INDEX [--seed S] [--float]   prints one case in full
  *
@@ -21,51 +24,38 @@
 static void show(unsigned long long seed, int cls, unsigned long index, int is_float)
 {
     corpus_case c;
-    corpus_casef f;
     ref_problem p;
     ref_result r;
     int i, code[2];
     double t[2];
     corpus_make(seed, cls, (uint32_t)index, is_float, &c);
-    corpus_to_float(&c, &f);
-    if (is_float) {
-        cc_contactf k[2];
-        k[0].t = k[1].t = -1.0f;
-        if (f.is_segment) {
-            ref_segmentf(&p, &f.a, &f.s, f.t_max);
-            code[0] = cc_sweep_segmentf(&f.a, &f.s, f.t_max, &k[0]);
-            code[1] = tb_sweep_segmentf(&f.a, &f.s, f.t_max, &k[1]);
-        } else {
-            ref_circlesf(&p, &f.a, &f.b, f.t_max);
-            code[0] = cc_sweepf(&f.a, &f.b, f.t_max, &k[0]);
-            code[1] = tb_sweepf(&f.a, &f.b, f.t_max, &k[1]);
-        }
-        t[0] = k[0].t, t[1] = k[1].t;
-    } else {
-        cc_contact k[2];
-        k[0].t = k[1].t = -1.0;
-        if (c.is_segment) {
-            ref_segment(&p, &c.a, &c.s, c.t_max);
-            code[0] = cc_sweep_segment(&c.a, &c.s, c.t_max, &k[0]);
-            code[1] = tb_sweep_segment(&c.a, &c.s, c.t_max, &k[1]);
-        } else {
-            ref_circles(&p, &c.a, &c.b, c.t_max);
-            code[0] = cc_sweep(&c.a, &c.b, c.t_max, &k[0]);
-            code[1] = tb_sweep(&c.a, &c.b, c.t_max, &k[1]);
-        }
-        t[0] = k[0].t, t[1] = k[1].t;
+    acc_problem(&c, is_float, &p);
+    for (i = 0; i < 2; i++) {
+        code[i] = -99, t[i] = -1.0;
+        if (!acc_solve(&c, is_float, i, &code[i], &t[i]))
+            code[i] = -99;
     }
     printf("%s case %lu (%s), %s\n", corpus_class_name(cls), index, is_float ? "float" : "double",
-           p.kind == REF_CIRCLES ? "pa pa va va ra pb pb vb vb rb t_max" : "p p v v r a a b b t_max");
+           p.kind == REF_CIRCLES        ? "pa pa va va ra pb pb vb vb rb t_max"
+           : p.kind == REF_SEGMENT      ? "p p v v r a a b b t_max"
+           : p.kind == REF_ROLL_CIRCLES ? "pa pa va va ra pb pb vb vb rb decel_a decel_b t_max"
+                                        : "p p v v r a a b b decel t_max");
     for (i = 0; i < p.n; i++)
         printf("  x[%d] = %a  (%.17g)\n", i, p.x[i], p.x[i]);
     ref_solve(&p, &r);
-    printf("exact: code %d t %.17g%+.3g feature %d cond %.3g normal (%.17g, %.17g)\n", r.code, r.t_hi, r.t_lo,
-           r.feature, r.cond, r.normal_x, r.normal_y);
+    printf("exact: code %d t %.17g%+.3g feature %d cond %.3g normal (%.17g, %.17g) degenerate %d\n", r.code, r.t_hi,
+           r.t_lo, r.feature, r.cond, r.normal_x, r.normal_y, r.degenerate);
     for (i = 0; i < 2; i++)
-        printf("%s: code %d t %.17g err %.3g ulps residual %.3g in band %d\n", i ? "textbook" : "ours", code[i], t[i],
+        if (code[i] != -99)
+            printf("%s: code %d t %.17g err %.3g ulps residual %.3g in band %d\n", i ? "textbook" : "ours", code[i], t[i],
                code[i] == CC_HIT && r.code == CC_HIT ? ref_t_error(&r, t[i]) / ((is_float ? 0x1p-23 : 0x1p-52) * r.cond) : 0.0,
                code[i] == CC_HIT ? ref_residual(&p, t[i]) : 0.0, ref_in_band(&p, code[i], ACC_BAND_ULPS));
+}
+
+static void roll_cells(const acc_stats *s)
+{
+    printf(" %ld (%ld) | %.2f | %.2f | %.1e | %.1e |", s->disagree, s->in_band, s->max_err, s->med_err, s->max_rel,
+           s->max_res);
 }
 
 static void cells(const acc_stats *s)
@@ -77,7 +67,7 @@ int main(int argc, char **argv)
 {
     unsigned long long seed = 20261122;
     unsigned long count = 2000;
-    int precisions = 3, textbook = 1, check = 0, i, cls, prec, failed = 0, show_cls = -1;
+    int precisions = 3, textbook = 1, check = 0, i, cls, prec, failed = 0, show_cls = -1, tables = 3, table;
     unsigned long show_index = 0;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--seed") && i + 1 < argc)
@@ -88,6 +78,10 @@ int main(int argc, char **argv)
             precisions = 1;
         else if (!strcmp(argv[i], "--float"))
             precisions = 2;
+        else if (!strcmp(argv[i], "--straight"))
+            tables = 1;
+        else if (!strcmp(argv[i], "--rolling"))
+            tables = 2;
         else if (!strcmp(argv[i], "--no-textbook"))
             textbook = 0;
         else if (!strcmp(argv[i], "--show") && i + 2 < argc) {
@@ -106,21 +100,40 @@ int main(int argc, char **argv)
     }
     printf("seed %llu, %lu cases per class; band = exact answer within %d ulps of every input\n\n", seed, count,
            ACC_BAND_ULPS);
-    printf("| class | prec | hits timed | ours: wrong (in band) | max err | median err | max residual |"
-           " textbook: wrong (in band) | max err | median err | max residual |\n");
-    printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (table = 0; table < 2; table++) {
+    if (!(tables & (1 << table)))
+        continue;
+    if (table == 0) {
+        printf("| class | prec | hits timed | ours: wrong (in band) | max err | median err | max residual |"
+               " textbook: wrong (in band) | max err | median err | max residual |\n");
+        printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    } else {
+        printf("\n| class | prec | hits timed | ties | ours: wrong (in band) | max err | median err | max rel. err |"
+               " max residual | textbook quartic: wrong (in band) | max err | median err | max rel. err | max residual |\n");
+        printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    }
     for (prec = 0; prec < 2; prec++) {
         if (!(precisions & (1 << prec)))
             continue;
-        for (cls = 0; cls < CORPUS_CLASSES; cls++) {
+        for (cls = table ? CORPUS_ROLL_FIRST : 0; cls < (table ? CORPUS_CLASSES : CORPUS_ROLL_FIRST); cls++) {
             acc_row row;
             acc_measure(seed, cls, (uint32_t)count, prec, textbook, &row);
-            printf("| %s | %s | %ld |", corpus_class_name(cls), prec ? "float" : "double", row.ours.timed);
-            cells(&row.ours);
-            if (textbook)
-                cells(&row.textbook);
-            else
-                printf(" | | | |");
+            if (table == 0) {
+                printf("| %s | %s | %ld |", corpus_class_name(cls), prec ? "float" : "double", row.ours.timed);
+                cells(&row.ours);
+                if (textbook)
+                    cells(&row.textbook);
+                else
+                    printf(" | | | |");
+            } else {
+                printf("| %s | %s | %ld | %ld |", corpus_class_name(cls), prec ? "float" : "double", row.ours.timed,
+                       row.ours.degenerate);
+                roll_cells(&row.ours);
+                if (textbook && row.textbook.cases > 0)
+                    roll_cells(&row.textbook);
+                else
+                    printf(" - | - | - | - | - |");
+            }
             printf("\n");
             fflush(stdout);
             if (row.ours.disagree > 0 || row.ours.max_err > ACC_TARGET_ULPS) {
@@ -130,6 +143,7 @@ int main(int argc, char **argv)
                         seed);
             }
         }
+    }
     }
     printf("\nwrong: answer differs from the exact one outside the band (in band: inside it); err: |t - t*| in units "
            "of eps * cond, cond = (|dp| + |dv| t + R) / closing speed; residual: relative to R.\n");
