@@ -332,9 +332,9 @@ static void corpus_make_rolling(rng *r, int cls, int for_float, corpus_case *c)
         c->t_max = HUGE_VAL;
         break;
     }
-    case 6: { /* a whole scene scaled by 2^k, k in -500..500 (float -60..60): lengths, speeds and
+    case 6: { /* a whole scene scaled by 2^k, k in -900..900 (float -100..100): lengths, speeds and
                  decelerations by the same power of two, times unchanged, exactly */
-        int k = (int)(next(r) % (for_float ? 121u : 1001u)) - (for_float ? 60 : 500);
+        int k = (int)(next(r) % (for_float ? 201u : 1801u)) - (for_float ? 100 : 900);
         double S = ldexp(1.0, k);
         roll_ordinary(r, c);
         scale_case(c, S);
@@ -371,7 +371,7 @@ const char *corpus_class_name(int cls)
         "grazing far",  "slow rel. 1e8", "subnormal",       "near t_max",       "seg ordinary",
         "seg offset",   "seg len ~0",   "seg len ~1e9",     "seg end points",   "seg grazing",
         "roll ordinary", "roll grazing", "roll stop short", "roll near stops", "roll tiny decel",
-        "roll huge decel", "roll scaled 2^+-500", "roll offset 1e15", "roll equal decel", "roll wall",
+        "roll huge decel", "roll scaled 2^+-900", "roll offset 1e15", "roll equal decel", "roll wall",
         "roll wall stop"};
     return cls >= 0 && cls < CORPUS_CLASSES ? names[cls] : "?";
 }
