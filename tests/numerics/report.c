@@ -7,9 +7,12 @@
  * cc_sweep_segment_rolling against the MPFR reference, the textbook quartic beside them).
  *
  *   numerics_report --show CLASS INDEX [--seed S] [--float]   prints one case in full
+ *   numerics_report --dump-rolling FILE [--count N]   the rolling pair cases, for bench/pooltool_rolling.py
+ *   numerics_report --judge PAIRS TIMES   another method's answers on such pairs against the reference
  *
  * --check exits 1 when the library misses a target (a disagreement outside the rounding band,
  * or a t error above 4 condition-scaled ulps) in some class. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,6 +55,90 @@ static void show(unsigned long long seed, int cls, unsigned long index, int is_f
                code[i] == CC_HIT ? ref_residual(&p, t[i]) : 0.0, ref_in_band(&p, code[i], ACC_BAND_ULPS));
 }
 
+/* --dump-rolling FILE: the double rolling pair classes' cases (not the walls), 14 doubles each
+ * (class, pa, va, ra, pb, vb, rb, decel_a, decel_b, t_max: bench/bench_pair_rolling.c's format),
+ * for bench/pooltool_rolling.py */
+static int dump_rolling(const char *path, unsigned long long seed, unsigned long count)
+{
+    FILE *f = fopen(path, "wb");
+    int cls;
+    unsigned long i;
+    if (f == NULL)
+        return 2;
+    for (cls = CORPUS_ROLL_FIRST; cls < CORPUS_CLASSES; cls++)
+        for (i = 0; i < count; i++) {
+            corpus_case c;
+            double x[14];
+            corpus_make(seed, cls, (uint32_t)i, 0, &c);
+            if (c.is_segment)
+                continue;
+            x[0] = cls, x[1] = c.a.pos.x, x[2] = c.a.pos.y, x[3] = c.a.vel.x, x[4] = c.a.vel.y, x[5] = c.a.radius;
+            x[6] = c.b.pos.x, x[7] = c.b.pos.y, x[8] = c.b.vel.x, x[9] = c.b.vel.y, x[10] = c.b.radius;
+            x[11] = c.decel_a, x[12] = c.decel_b, x[13] = c.t_max;
+            fwrite(x, sizeof x, 1, f);
+        }
+    fclose(f);
+    return 0;
+}
+
+/* --judge PAIRS TIMES: another method's answers (8 bytes per pair: t, +inf for a miss, 0 for an
+ * overlap) against the reference, per class: wrong (outside the band), in band, t errors */
+static int judge(const char *pairs, const char *times)
+{
+    FILE *fp = fopen(pairs, "rb"), *ft = fopen(times, "rb");
+    enum { NC = CORPUS_CLASSES + 1 };
+    long cases[NC] = {0}, wrong[NC] = {0}, band[NC] = {0}, timed[NC] = {0}, ties[NC] = {0};
+    double max_err[NC] = {0}, max_rel[NC] = {0};
+    int k;
+    if (fp == NULL || ft == NULL)
+        return 2;
+    for (;;) {
+        double x[14], t;
+        ref_problem p;
+        ref_result r;
+        cc_circle a, b;
+        int code, cls;
+        if (fread(x, sizeof x, 1, fp) != 1 || fread(&t, sizeof t, 1, ft) != 1)
+            break;
+        cls = x[0] < 0 ? CORPUS_CLASSES : (int)x[0];
+        a.pos.x = x[1], a.pos.y = x[2], a.vel.x = x[3], a.vel.y = x[4], a.radius = x[5], a.mass = 1;
+        b.pos.x = x[6], b.pos.y = x[7], b.vel.x = x[8], b.vel.y = x[9], b.radius = x[10], b.mass = 1;
+        ref_roll_circles(&p, &a, x[11], &b, x[12], x[13]);
+        ref_solve(&p, &r);
+        code = t == 0.0 ? (r.code == CC_OVERLAP ? CC_OVERLAP : CC_HIT) : t < HUGE_VAL ? CC_HIT : CC_MISS;
+        cases[cls]++;
+        if (r.degenerate) {
+            ties[cls]++;
+            continue;
+        }
+        if (code != r.code || (code == CC_HIT && !(t >= 0.0 && t <= x[13]))) {
+            if (code == CC_HIT && !(t >= 0.0 && t <= x[13]))
+                wrong[cls]++;
+            else if (ref_in_band(&p, code, ACC_BAND_ULPS))
+                band[cls]++;
+            else
+                wrong[cls]++;
+            continue;
+        }
+        if (code == CC_HIT) {
+            double e = isinf(r.cond) ? 0.0 : ref_t_error(&r, t) / (0x1p-52 * r.cond);
+            timed[cls]++;
+            if (e > max_err[cls])
+                max_err[cls] = e;
+            if (r.t_hi > 0 && ref_t_error(&r, t) / r.t_hi > max_rel[cls])
+                max_rel[cls] = ref_t_error(&r, t) / r.t_hi;
+        }
+    }
+    fclose(fp);
+    fclose(ft);
+    printf("| class | cases | ties | hits timed | wrong (in band) | max err | max rel. err |\n|---|---|---|---|---|---|---|\n");
+    for (k = 0; k < NC; k++)
+        if (cases[k] > 0)
+            printf("| %s | %ld | %ld | %ld | %ld (%ld) | %.3g | %.1e |\n", k == CORPUS_CLASSES ? "pool pairs" : corpus_class_name(k),
+                   cases[k], ties[k], timed[k], wrong[k], band[k], max_err[k], max_rel[k]);
+    return 0;
+}
+
 static void roll_cells(const acc_stats *s)
 {
     printf(" %ld (%ld) | %.2f | %.2f | %.1e | %.1e |", s->disagree, s->in_band, s->max_err, s->med_err, s->max_rel,
@@ -69,6 +156,7 @@ int main(int argc, char **argv)
     unsigned long count = 2000;
     int precisions = 3, textbook = 1, check = 0, i, cls, prec, failed = 0, show_cls = -1, tables = 3, table;
     unsigned long show_index = 0;
+    const char *dump_path = NULL, *judge_pairs = NULL, *judge_times = NULL;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--seed") && i + 1 < argc)
             seed = strtoull(argv[++i], NULL, 0);
@@ -78,7 +166,12 @@ int main(int argc, char **argv)
             precisions = 1;
         else if (!strcmp(argv[i], "--float"))
             precisions = 2;
-        else if (!strcmp(argv[i], "--straight"))
+        else if (!strcmp(argv[i], "--dump-rolling") && i + 1 < argc)
+            dump_path = argv[++i];
+        else if (!strcmp(argv[i], "--judge") && i + 2 < argc) {
+            judge_pairs = argv[++i];
+            judge_times = argv[++i];
+        } else if (!strcmp(argv[i], "--straight"))
             tables = 1;
         else if (!strcmp(argv[i], "--rolling"))
             tables = 2;
@@ -94,6 +187,10 @@ int main(int argc, char **argv)
             return 2;
         }
     }
+    if (dump_path)
+        return dump_rolling(dump_path, seed, count);
+    if (judge_pairs)
+        return judge(judge_pairs, judge_times);
     if (show_cls >= 0) {
         show(seed, show_cls, show_index, precisions == 2);
         return 0;
