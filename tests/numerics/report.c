@@ -82,7 +82,7 @@ static int dump_rolling(const char *path, unsigned long long seed, unsigned long
 }
 
 /* --judge PAIRS TIMES: another method's answers (8 bytes per pair: t, +inf for a miss, 0 for an
- * overlap) against the reference, per class: wrong (outside the band), in band, t errors */
+ * overlap, NaN when it failed: counted wrong) against the reference, per class: wrong (outside the band), in band, t errors */
 static int judge(const char *pairs, const char *times)
 {
     FILE *fp = fopen(pairs, "rb"), *ft = fopen(times, "rb");
@@ -107,6 +107,10 @@ static int judge(const char *pairs, const char *times)
         ref_solve(&p, &r);
         code = t == 0.0 ? (r.code == CC_OVERLAP ? CC_OVERLAP : CC_HIT) : t < HUGE_VAL ? CC_HIT : CC_MISS;
         cases[cls]++;
+        if (isnan(t)) { /* the method failed (raised) */
+            wrong[cls]++;
+            continue;
+        }
         if (r.degenerate) {
             ties[cls]++;
             continue;
