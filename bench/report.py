@@ -346,6 +346,7 @@ def main():
     w("bench/run.sh            # everything, writes this page (several minutes)")
     w("bench/run.sh --quick    # the headline figures only, under a minute once built")
     w("build-bench/bench/bench_pair --help; build-bench/bench/bench_world matrix|headline|scaling|features")
+    w("build-bench/bench/bench_pair_rolling dump|time; bench/pooltool_rolling.py (section 7)")
     w("build-bench/bench/bench_queries casts|walls")
     w("```")
     w("")
