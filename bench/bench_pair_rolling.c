@@ -6,6 +6,7 @@
  *   bench_pair_rolling dump N FILE [--seed S]   pool-like pairs (14 doubles each, below)
  *   bench_pair_rolling time FILE [--rounds R]   ns per pair of each method (median, spread over
  *                                               the rounds), and FILE.ours: our t per pair
+ *   bench_pair_rolling run N FILE               dump, then time one round (ctest's tiny run)
  *
  * A pair is 14 doubles: class (-1 for these), pa.x pa.y va.x va.y ra pb.x pb.y vb.x vb.y rb
  * decel_a decel_b t_max. The pool pairs: balls of radius 0.028575 m on a 2.54 x 1.27 m table,
@@ -164,11 +165,16 @@ int main(int argc, char **argv)
         dump(strtol(argv[2], NULL, 0), argv[3], seed);
         return 0;
     }
+    if (argc >= 4 && !strcmp(argv[1], "run")) { /* dump, then time one round (the ctest's tiny run) */
+        dump(strtol(argv[2], NULL, 0), argv[3], 12);
+        timing(argv[3], 1);
+        return 0;
+    }
     if (argc >= 3 && !strcmp(argv[1], "time")) {
         int rounds = argc >= 5 && !strcmp(argv[3], "--rounds") ? atoi(argv[4]) : 9;
         timing(argv[2], rounds > 0 ? rounds : 9);
         return 0;
     }
-    fprintf(stderr, "usage: %s dump N FILE [--seed S] | time FILE [--rounds R]\n", argv[0]);
+    fprintf(stderr, "usage: %s dump N FILE [--seed S] | time FILE [--rounds R] | run N FILE\n", argv[0]);
     return 2;
 }
