@@ -11,6 +11,7 @@ cc_add_test(NAME test_world_props SOURCES test_world_props.c LABELS world)
 cc_add_test(NAME test_world_queries SOURCES test_world_queries.c LABELS world)
 cc_add_test(NAME test_world_periodic SOURCES test_world_periodic.c LABELS world)
 cc_add_test(NAME test_world_rolling SOURCES test_world_rolling.c LABELS world)
+cc_add_test(NAME test_world_fuzz_defects SOURCES test_world_fuzz_defects.c LABELS world)
 cc_add_test(NAME test_world_def_compat SOURCES test_world_def_compat.c LABELS world)
 cc_add_test(NAME test_world_soak SOURCES test_world_soak.c LABELS world TIMEOUT 300)
 # The world against the plain reference simulator (issue 11): 4,000 random scenes against the
