@@ -428,8 +428,10 @@ CC_API int cc_world_remove_circle(cc_world *w, int id);
 /* Advances world time by dt >= 0 in the world's mode. Returns CC_OK; CC_EVENT_LIMIT when an
  * EXACT step processed max_events events and stopped early (the world is consistent, its time is that
  * of the last event processed, and another call continues); CC_ERR_INVALID for dt < 0, NaN or
- * Inf, a world time that would overflow, or a call from the contact callback (nothing
- * changes). dt = 0 resolves pending overlaps and the impacts due now. */
+ * Inf, a world time that would overflow, a step along whose straight path (p + v dt from now)
+ * a circle would pass 2^1017 (about 1.4e306) in either coordinate, where the arithmetic would
+ * overflow, or a call from the contact callback (nothing changes). dt = 0 resolves pending
+ * overlaps and the impacts due now. */
 CC_API int cc_world_step(cc_world *w, double dt);
 
 /* The circle's state at the current world time (pos is where it is now). CC_OK,

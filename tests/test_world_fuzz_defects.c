@@ -110,10 +110,47 @@ static void test_a_rolling_jam_at_the_event_cap_stays_within_the_tolerance(void)
     tw_free(&m);
 }
 
+/* D1: a step with a valid dt (the world time stays finite) that carried a circle past DBL_MAX
+ * returned CC_OK and left it at +-Inf. The header: a step whose straight paths pass 2^1017 is
+ * refused and changes nothing; one within that bound is made, positions finite. Every mode,
+ * open and periodic. */
+static void test_a_step_past_the_representable_plane_is_refused(void)
+{
+    int mode, per;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
+        for (per = 0; per < 2; per++) {
+            cc_world_def d;
+            tw_mem m;
+            cc_world *w;
+            cc_circle c = {{1.0, 1.0}, {-5.0, -2.5}, 0.5, 1.0}, o;
+            uint64_t h;
+            cc_world_def_init(&d);
+            d.mode = mode;
+            d.max_circles = 4;
+            d.period.x = d.period.y = per ? 20.0 : 0.0;
+            w = tw_make(&m, &d, 0);
+            TEST_ASSERT_NOT_NULL(w);
+            TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
+            h = cc_world_hash(w);
+            TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_step(w, 1e308)); /* 5e308: past DBL_MAX */
+            TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_step(w, 0x1p1015)); /* 5 * 2^1015 > 2^1017 */
+            TEST_ASSERT_TRUE(h == cc_world_hash(w));
+            TEST_ASSERT_EQUAL_DOUBLE(0.0, cc_world_time(w));
+            if (per == 0) {
+                TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0x1p1014)); /* 5 * 2^1014 < 2^1017 */
+                TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
+                TEST_ASSERT_TRUE(isfinite(o.pos.x) && isfinite(o.pos.y));
+                TEST_ASSERT_TRUE(o.pos.x < -1e305);
+            }
+            tw_free(&m);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_a_pushed_rolling_circle_is_not_lost_at_a_touch);
     RUN_TEST(test_a_rolling_jam_at_the_event_cap_stays_within_the_tolerance);
+    RUN_TEST(test_a_step_past_the_representable_plane_is_refused);
     return UNITY_END();
 }

@@ -523,8 +523,9 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
 
 /* Known defects (reported to the lead), which the harness steps around unless built with
  * -DFUZZ_WORLD_STRICT (then it makes these calls and the violation shows):
- * D1  a step whose dt is valid (the time stays finite) but carries a circle past DBL_MAX along an
- *     open axis returns CC_OK and leaves it at +-Inf (a periodic axis: -Inf stays -Inf);
+ * D1  fixed: a step whose dt is valid (the time stays finite) but carried a circle past DBL_MAX
+ *     returned CC_OK and left it at +-Inf; the header now says a step whose straight paths pass
+ *     2^1017 is refused, and do_step checks it (step_range);
  * D2  a periodic world given a coordinate more than 2^31 periods from the origin (a circle added
  *     or set there, or carried there by a step) converts the number of periods to int32_t
  *     (src/world/grid.c cc__wrap_coord): undefined behaviour (UBSan: float-cast-overflow);
@@ -567,7 +568,7 @@ static int far_on_axis(const model *m, int k, double x)
 #else
     if (m->period[k] > 0.0)
         return !(fabs(x) < 1e9 * m->period[k]);
-    return !(fabs(x) < 1e306);
+    return 0; /* open axis: D1 fixed, the library refuses a step past 2^1017 (checked in do_step) */
 #endif
 }
 
@@ -617,8 +618,26 @@ static int place_ub(const model *m, const cc_circle *c)
                                (m->period[1] > 0.0 && far_on_axis(m, 1, c->pos.y)));
 }
 
+/* The header's range of a step: 1 when some circle's straight path (p + v dt) passes 2^1017
+ * along an axis (the step must be refused), -1 when every one stays clear of it by a margin
+ * for rounding (it must not be), 0 in between. */
+static int step_range(const snap *s, double dt)
+{
+    const double lim = 0x1p1017;
+    int i, far = 0;
+    for (i = 0; i < s->n; i++) {
+        double x = fabs(s->c[i].pos.x) + fabs(s->c[i].vel.x) * dt, y = fabs(s->c[i].pos.y) + fabs(s->c[i].vel.y) * dt;
+        if (!(x < lim * (1.0 + 1e-9) && y < lim * (1.0 + 1e-9)))
+            return 1;
+        if (!(x < lim * (1.0 - 1e-9) && y < lim * (1.0 - 1e-9)))
+            far = 1;
+    }
+    return far ? 0 : -1;
+}
+
 static void do_step(model *m, double dt, const snap *before)
 {
+    int range;
     cc_world_stats s0, s1;
     int kin, rc, clean = 0;
     double e0 = kinetic(before, &kin), e1, t0 = m->time;
@@ -642,7 +661,9 @@ static void do_step(model *m, double dt, const snap *before)
     REQUIRE(m, rc_step_ok(rc), "step: a result outside OK, EVENT_LIMIT, INVALID");
     if (!(dt >= 0.0) || isinf(dt))
         REQUIRE(m, rc == CC_ERR_INVALID, "step: an invalid dt not refused");
-    else if (isfinite(t0 + dt))
+    else if ((range = step_range(before, dt)) > 0)
+        REQUIRE(m, rc == CC_ERR_INVALID, "step: a step carrying a circle past 2^1017 not refused");
+    else if (isfinite(t0 + dt) && range < 0)
         REQUIRE(m, rc != CC_ERR_INVALID, "step: a valid dt refused");
     if (rc == CC_ERR_INVALID)
         REQUIRE(m, cc_world_hash(m->w) == h0, "step: a refused step changed the world");
