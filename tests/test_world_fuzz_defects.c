@@ -146,11 +146,45 @@ static void test_a_step_past_the_representable_plane_is_refused(void)
         }
 }
 
+/* D3: the queries compared dx^2 + dy^2 with R^2, both Inf beyond about 1e154: a circle of
+ * radius R centred at (0.2 R, 0.1 R) covers the query disc (radius 1) and box at the origin, but
+ * was not reported. Every mode, before and after a step; R = 1e10 is the control. */
+static void test_a_query_finds_a_huge_circle_covering_it(void)
+{
+    static const double radii[3] = {1e10, 1e200, 1e300};
+    int mode, k;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
+        for (k = 0; k < 3; k++) {
+            cc_world_def d;
+            tw_mem m;
+            cc_world *w;
+            double R = radii[k];
+            cc_circle c = {{0.2 * R, 0.1 * R}, {0.0, 0.0}, R, 1.0};
+            cc_vec2 q = {0.0, 0.0}, lo = {-1.0, -1.0}, hi = {1.0, 1.0}, far = {-1.5 * R, 0.0};
+            int ids[4], step;
+            cc_world_def_init(&d);
+            d.mode = mode;
+            d.max_circles = 4;
+            w = tw_make(&m, &d, 0);
+            TEST_ASSERT_NOT_NULL(w);
+            TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
+            for (step = 0; step < 2; step++) {
+                TEST_ASSERT_EQUAL_INT(1, cc_world_query_circle(w, q, 1.0, ~0u, ids, 4));
+                TEST_ASSERT_EQUAL_INT(1, cc_world_query_box(w, lo, hi, ~0u, ids, 4));
+                /* and not one it does not cover: 1.5 R - 0.2 R along x, beyond R + 0.2 R */
+                TEST_ASSERT_EQUAL_INT(0, cc_world_query_circle(w, far, 0.2 * R, ~0u, ids, 4));
+                TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));
+            }
+            tw_free(&m);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_a_pushed_rolling_circle_is_not_lost_at_a_touch);
     RUN_TEST(test_a_rolling_jam_at_the_event_cap_stays_within_the_tolerance);
     RUN_TEST(test_a_step_past_the_representable_plane_is_refused);
+    RUN_TEST(test_a_query_finds_a_huge_circle_covering_it);
     return UNITY_END();
 }

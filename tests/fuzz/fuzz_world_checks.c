@@ -530,9 +530,8 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  * D2  a periodic world given a coordinate more than 2^31 periods from the origin (a circle added
  *     or set there, or carried there by a step) converts the number of periods to int32_t
  *     (src/world/grid.c cc__wrap_coord): undefined behaviour (UBSan: float-cast-overflow);
- * D3  cc_world_query_circle compares dx * dx + dy * dy < R * R (src/world/query.c): with radii or
- *     distances above about 1e154 both sides overflow to Inf and a circle covering the query disc
- *     is not reported (query_box likewise, the other way, in its corner test);
+ * D3  fixed: the queries compared dx * dx + dy * dy < R * R (src/world/query.c), both sides Inf
+ *     above about 1e154; they now scale by 2^-600 first (test_world_fuzz_defects.c);
  * D4  a periodic world whose period holds more than 2^31 cells (period 20, a circle of radius 1e-9,
  *     or an empty world whose def.cell_size is 1e-300)
  *     converts the cell count to int32_t at the step's rebuild (src/world/overlap.c, w->ncell):
@@ -938,8 +937,6 @@ static void do_query(model *m, reader *r, int box, const snap *s)
         }
         if ((m->period[0] > 0.0 && !(m->period[0] < 1e9)) || (m->period[1] > 0.0 && !(m->period[1] < 1e9)))
             sure_in = sure_out = 0; /* D11 */
-        if (!(lim < 1e150 && d < 1e150))
-            sure_in = sure_out = 0; /* D3: squares of distances overflow in src/world/query.c */
 #endif
         in_out = 0;
         listed = 0;
