@@ -556,6 +556,11 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  *     queries are not checked against brute force with periods beyond 1e9;
  * D9, D13 fixed (the rolling sweep lost a pushed pair at a touch; tests/test_world_fuzz_defects.c):
  *     no longer stepped around;
+ * D14 EXACT: a circle set with radius 1e300 on top of others and a wall: the wall's push-out
+ *     gives an Inf impulse and a NaN contact point (D7's and D12's class: squares of lengths near
+ *     1e300 overflow; world_defects/d14-huge-radius-wall-nan-point): while a circle's coordinates,
+ *     velocity or radius exceed 1e150 (or a call places such a circle) contact points are not
+ *     checked;
  * D8  SWEPT, periodic: a step that carries a circle more than a period is accepted (the header
  *     says it must not happen, the library does not refuse it), and query_box then misses that
  *     circle (tests/fuzz/world_defects/d8_swept_periodic_long_step_query.c). The harness keeps
@@ -608,11 +613,13 @@ static int step_overflows(const model *m, const snap *s, double dt)
     return 0;
 }
 
-static int place_ub(const model *m, const cc_circle *c)
+static int place_ub(model *m, const cc_circle *c)
 {
 #ifndef FUZZ_WORLD_STRICT
     if (circle_valid(c) && (fabs(c->vel.x) > 1e300 || fabs(c->vel.y) > 1e300))
         return 1; /* D7: velocities near DBL_MAX (1e308, DBL_MAX) overflow the impulses */
+    if (circle_valid(c) && !(fabs(c->pos.x) + fabs(c->pos.y) + fabs(c->vel.x) + fabs(c->vel.y) + c->radius < 1e150))
+        m->huge = 1; /* D14: the call itself may give a contact a NaN point (D7's class) */
 #endif
     return circle_valid(c) && ((m->period[0] > 0.0 && far_on_axis(m, 0, c->pos.x)) ||
                                (m->period[1] > 0.0 && far_on_axis(m, 1, c->pos.y)));
@@ -1057,8 +1064,8 @@ static int one_call(model *m, reader *r, int op)
         int i;
         m->huge = 0;
         for (i = 0; i < before.n; i++)
-            if (!(fabs(before.c[i].pos.x) + fabs(before.c[i].pos.y) + fabs(before.c[i].vel.x) + fabs(before.c[i].vel.y) <
-                  1e150))
+            if (!(fabs(before.c[i].pos.x) + fabs(before.c[i].pos.y) + fabs(before.c[i].vel.x) + fabs(before.c[i].vel.y) +
+                      before.c[i].radius < 1e150)) /* (the radius too: D12, D14) */
                 m->huge = 1;
     }
     if (getenv("FUZZ_WORLD_TRACE")) {
