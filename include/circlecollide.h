@@ -430,7 +430,8 @@ CC_API int cc_world_remove_circle(cc_world *w, int id);
  * of the last event processed, and another call continues); CC_ERR_INVALID for dt < 0, NaN or
  * Inf, a world time that would overflow, a step along whose straight path (p + v dt from now)
  * a circle would pass 2^1017 (about 1.4e306) in either coordinate, where the arithmetic would
- * overflow, or a call from the contact callback (nothing changes). dt = 0 resolves pending
+ * overflow, a SWEPT step of a periodic world that would carry a circle half a period (see
+ * "Periodic boxes"), or a call from the contact callback (nothing changes). dt = 0 resolves pending
  * overlaps and the impacts due now. */
 CC_API int cc_world_step(cc_world *w, double dt);
 
@@ -461,7 +462,7 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  * wall should span the period (a channel's sides, reaching a radius beyond both ends) or keep
  * away from its edges. A periodic world always has a grid, also with max_circles <= 32. SWEPT
  * and DISCRETE take the nearest image of each pair: a step must not carry a circle half a
- * period. Casts see every image along their path; queries report each circle once (its image
+ * period (SWEPT refuses such a step: CC_ERR_INVALID, nothing changes). Casts see every image along their path; queries report each circle once (its image
  * nearest the query). */
 
 /* Rolling to rest (1.1): a movable circle with a deceleration a > 0 (def.rolling_decel, or its

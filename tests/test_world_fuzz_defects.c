@@ -179,6 +179,43 @@ static void test_a_query_finds_a_huge_circle_covering_it(void)
         }
 }
 
+/* D8: SWEPT in a periodic world (periods 20.04 x 16.06) accepted a step carrying a circle more
+ * than a period (speed (3.8, -4.5), dt 5 and up), and query_box then missed the circle. The
+ * header: SWEPT refuses a step that carries a circle half a period (CC_ERR_INVALID, nothing
+ * changes). Steps of 1.7 (6.4 along x, 7.7 along y: just short) are made, and after them the
+ * query finds the circle where get_circle puts it. */
+static void test_a_swept_periodic_step_of_half_a_period_is_refused(void)
+{
+    cc_world_def d;
+    tw_mem m;
+    cc_world *w;
+    cc_circle c = {{5.0, 10.0}, {3.7966804979253119, -4.5435684647302903}, 0.34, 3.1}, o;
+    cc_vec2 lo, hi;
+    int ids[4], i;
+    uint64_t h;
+    cc_world_def_init(&d);
+    d.mode = CC_MODE_SWEPT;
+    d.max_circles = 8;
+    d.period.x = 20.0415;
+    d.period.y = 16.0581;
+    w = tw_make(&m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.0));
+    h = cc_world_hash(w);
+    TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_step(w, 1e6));
+    TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_step(w, 5.0));
+    TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_step(w, 1.8)); /* 8.18 along y: half is 8.03 */
+    TEST_ASSERT_TRUE(h == cc_world_hash(w));
+    for (i = 0; i < 3; i++) {
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.7));
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
+        lo.x = o.pos.x - 0.4, hi.x = o.pos.x + 0.4, hi.y = o.pos.y - 0.2, lo.y = hi.y - 4.0;
+        TEST_ASSERT_EQUAL_INT(1, cc_world_query_box(w, lo, hi, ~0u, ids, 4));
+    }
+    tw_free(&m);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -186,5 +223,6 @@ int main(void)
     RUN_TEST(test_a_rolling_jam_at_the_event_cap_stays_within_the_tolerance);
     RUN_TEST(test_a_step_past_the_representable_plane_is_refused);
     RUN_TEST(test_a_query_finds_a_huge_circle_covering_it);
+    RUN_TEST(test_a_swept_periodic_step_of_half_a_period_is_refused);
     return UNITY_END();
 }

@@ -561,10 +561,9 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  *     1e300 overflow; world_defects/d14-huge-radius-wall-nan-point): while a circle's coordinates,
  *     velocity or radius exceed 1e150 (or a call places such a circle) contact points are not
  *     checked;
- * D8  SWEPT, periodic: a step that carries a circle more than a period is accepted (the header
- *     says it must not happen, the library does not refuse it), and query_box then misses that
- *     circle (tests/fuzz/world_defects/d8_swept_periodic_long_step_query.c). The harness keeps
- *     to the precondition: such steps are not made, even with FUZZ_WORLD_STRICT. */
+ * D8  fixed: SWEPT, periodic: a step that carried a circle more than a period was accepted and
+ *     query_box then missed that circle; SWEPT now refuses a step carrying a circle half a period
+ *     (swept_too_long checks it); DISCRETE's steps keep to the header's precondition. */
 static int far_on_axis(const model *m, int k, double x)
 {
 #ifdef FUZZ_WORLD_STRICT
@@ -582,7 +581,7 @@ static int step_overflows(const model *m, const snap *s, double dt)
     int i, k;
     /* the header: in SWEPT and DISCRETE "a step must not carry a circle half a period" (a
      * precondition the library does not check: D8 when broken) */
-    if (m->mode != CC_MODE_EXACT)
+    if (m->mode == CC_MODE_DISCRETE) /* (SWEPT refuses such a step: do_step checks it, D8) */
         for (i = 0; i < s->n; i++)
             for (k = 0; k < 2; k++)
                 if (m->period[k] > 0.0 && !(fabs(k ? s->c[i].vel.y : s->c[i].vel.x) * dt < 0.5 * m->period[k]))
@@ -642,6 +641,25 @@ static int step_range(const snap *s, double dt)
     return far ? 0 : -1;
 }
 
+/* SWEPT in a periodic world (D8 fixed: the header refuses a step that carries a circle half a
+ * period): 1 when some circle, none rolling, goes beyond half a period (it must be refused), -1
+ * when every straight path stays short of it by a margin (it must not be), 0 otherwise. */
+static int swept_too_long(const model *m, const snap *s, double dt)
+{
+    int i, k, near = 0, rolls = 0;
+    for (i = 0; i < s->n; i++) {
+        rolls |= s->p[i].rolling_decel > 0.0 && !isinf(s->c[i].mass);
+        for (k = 0; k < 2; k++) {
+            double d = fabs(k ? s->c[i].vel.y : s->c[i].vel.x) * dt, h = 0.5 * m->period[k];
+            if (m->period[k] > 0.0 && !(d < h * (1.0 - 1e-9)))
+                near = 1;
+            if (m->period[k] > 0.0 && !(d < h * (1.0 + 1e-9)) && !rolls)
+                return 1;
+        }
+    }
+    return near || rolls ? (near ? 0 : -1) : -1;
+}
+
 static void do_step(model *m, double dt, const snap *before)
 {
     int range;
@@ -668,6 +686,10 @@ static void do_step(model *m, double dt, const snap *before)
     REQUIRE(m, rc_step_ok(rc), "step: a result outside OK, EVENT_LIMIT, INVALID");
     if (!(dt >= 0.0) || isinf(dt))
         REQUIRE(m, rc == CC_ERR_INVALID, "step: an invalid dt not refused");
+    else if (m->mode == CC_MODE_SWEPT && swept_too_long(m, before, dt) > 0)
+        REQUIRE(m, rc == CC_ERR_INVALID, "step: SWEPT, periodic: a step carrying a circle half a period not refused");
+    else if (m->mode == CC_MODE_SWEPT && swept_too_long(m, before, dt) == 0)
+        ; /* within rounding of half a period, or rolling: either answer */
     else if ((range = step_range(before, dt)) > 0)
         REQUIRE(m, rc == CC_ERR_INVALID, "step: a step carrying a circle past 2^1017 not refused");
     else if (isfinite(t0 + dt) && range < 0)
