@@ -484,7 +484,9 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  *         behind one with more, or a pair leaving each other at an angle after a collision at
  *         restitution < 1 or below rest_speed) is a ball bouncing on a floor: its impacts come
  *         ever closer in time, and cc_world_step returns CC_EVENT_LIMIT (see there) once it
- *         reaches def.max_events. Circles of one deceleration moving apart after an elastic
+ *         reaches def.max_events, the pair left touching within the tolerance (see Tolerance;
+ *         a contact parting slower than rounding resolves is watched until it closes again at
+ *         the least approach that counts). Circles of one deceleration moving apart after an elastic
  *         impact (billiards) do not meet this. */
 
 /* The position of circle id without wrapping: where it would be had the periods not been taken
