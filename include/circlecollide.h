@@ -259,6 +259,12 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           one that separates is left to drift apart. An approach slower than 2^-40 times the
  *           two bodies' summed speeds (rounding), or slower than rest_speed * 2^-20 (a resting
  *           contact), is not an impact.
+ * Range     Impacts square lengths and multiply speeds by times: with coordinates, radii or
+ *           speeds beyond about 2^500 (1e150) they may overflow (an Inf impulse, a NaN contact
+ *           point, an overlap left behind), and world times near 1e300 lose positions; keep
+ *           scenes below that (the world fuzzer's D7, D10, D12, D14 in
+ *           tests/fuzz/world_defects/). Queries compare scaled squares and hold at any size; a
+ *           step that would carry a circle past 2^1017 is refused (cc_world_step).
  * Overlaps  Overlaps the caller makes are resolved, never ignored: in EXACT, a circle added or
  *           set on top of others is pushed apart from each at once with cc_separate (shares
  *           inverse to the masses), then given the impact if the pair approaches; a circle
