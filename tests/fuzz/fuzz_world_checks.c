@@ -10,7 +10,7 @@
  *           bits 5-6 restitution_mix (with byte 4 bit 7: the invalid mix 4)
  *   byte 4  bits 0-6: which of rest_speed, cell_size, rolling_decel are nonzero; bit 7 see above
  *   then    values: restitution, rest_speed, cell_size, rolling_decel, period x, period y (each
- *           a "value", below), max_events (2 bytes: 1 + v % 5000, v = 0xFFFF gives 0: invalid)
+ *           a "value", below), max_events (2 bytes: 1 + v % 1000, v = 0xFFFF gives 0: invalid)
  *   then    calls: one opcode byte each (% OP_COUNT), then that call's arguments.
  * A value is one byte b: b < 12 a hostile double (NaN, +-Inf, 1e300, 1e-300, subnormals, -0,
  * DBL_MAX, ...) chosen by the next byte; b = 12 or 13 the raw 8 bytes that follow; otherwise an
@@ -713,7 +713,7 @@ static void do_step(model *m, double dt, const snap *before)
     if (rc == CC_EVENT_LIMIT)
         REQUIRE(m, m->time <= t0 + dt, "step: EVENT_LIMIT past t + dt");
     /* a jam (the header's "Pushing": a circle pushed by one that decelerates less) reaches the
-     * cap at every step, each up to 5000 events of rolling sweeps (clusters of several contacts,
+     * cap at every step, each up to 1000 events of rolling sweeps (clusters of several contacts,
      * about 1.5 ms an event under coverage and sanitizers): after the first such step of a
      * rolling world, or the second of any (its checks below made), the input ends, so that the
      * run stays within libFuzzer's timeout */
@@ -1329,7 +1329,7 @@ void fuzz_world_one(const uint8_t *data, size_t size)
     {
         unsigned v = byte(&r);
         v = v * 256u + byte(&r);
-        def.max_events = v == 0xFFFFu ? 0u : 1u + v % 5000u;
+        def.max_events = v == 0xFFFFu ? 0u : 1u + v % 1000u;
     }
     def.restitution_mix = nz & 0x80u ? 4 : (int)((flags >> 5) & 3u);
     def.on_contact = flags & 1u ? on_contact : NULL;
