@@ -216,6 +216,34 @@ static void test_a_swept_periodic_step_of_half_a_period_is_refused(void)
     tw_free(&m);
 }
 
+/* D15: a cast in a periodic world whose path end p + d overflows to Inf: the grid's range of
+ * cells came from floor(Inf - Inf) = NaN, converted to an integer (undefined behaviour, caught by
+ * UBSan in the fuzz build's replay of corpus_world/d15-periodic-cast-path-overflows). Now the
+ * range is clamped; the answer is one the header allows (beyond 2^1017 it promises nothing about
+ * hits: Range). A cast of ordinary size in the same world still hits. */
+static void test_a_periodic_cast_past_dbl_max_is_defined(void)
+{
+    cc_world_def d;
+    tw_mem m;
+    cc_world *w;
+    cc_circle c = {{10.0, 5.0}, {0.0, 0.0}, 1.0, 1.0};
+    cc_vec2 p = {1e308, 5.0}, dir = {DBL_MAX, 0.0}, p2 = {1.0, 5.0}, d2 = {10.0, 0.0};
+    cc_cast_hit hit;
+    int r;
+    cc_world_def_init(&d);
+    d.max_circles = 4;
+    d.period.x = d.period.y = 20.0;
+    w = tw_make(&m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.0)); /* the grid built: the casts use it */
+    r = cc_world_cast_circle(w, p, 0.5, dir, ~0u, &hit);
+    TEST_ASSERT_TRUE(r == CC_HIT || r == CC_MISS);
+    TEST_ASSERT_EQUAL_INT(CC_HIT, cc_world_cast_circle(w, p2, 0.5, d2, ~0u, &hit));
+    TEST_ASSERT_DOUBLE_WITHIN(1e-12, 0.75, hit.t); /* 1 + 10 t = 10 - 1.5 */
+    tw_free(&m);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -224,5 +252,6 @@ int main(void)
     RUN_TEST(test_a_step_past_the_representable_plane_is_refused);
     RUN_TEST(test_a_query_finds_a_huge_circle_covering_it);
     RUN_TEST(test_a_swept_periodic_step_of_half_a_period_is_refused);
+    RUN_TEST(test_a_periodic_cast_past_dbl_max_is_defined);
     return UNITY_END();
 }
