@@ -322,13 +322,51 @@ def main():
                 w("```")
                 w("")
 
+    # ---- the Python path (bench/python_path.py)
+    py = read(os.path.join(res, "python_path.txt"))
+    if py:
+        w("## 7. The Python path")
+        w("")
+        w("`bench/python_path.py`: the gas of section 4 at N = 10,000 stepped from Python (one `World.step` "
+          "call a frame, then also reading `World.positions` every frame) against `bench_world peer` in C, "
+          "and one pair-function call from Python against the C function and the Python peers' "
+          "equivalents (billiards' `time_of_impact` answers what `sweep` does; pymunk's "
+          "`shapes_collide` what `detect_static` does). Each round measures every row; ratios are per "
+          "round, median [min, max]. Python runs the same library build (CIRCLECOLLIDE_LIBRARY).")
+        w("")
+        w("```")
+        w("\n".join(l for l in py.splitlines() if not l.startswith("figure ")))
+        w("```")
+        w("")
+
+    # ---- rolling pair (bench_pair_rolling + pooltool_rolling.py, issue 12)
+    rolling = read(os.path.join(res, "rolling.txt"))
+    if rolling:
+        w("## 8. Rolling pair: cc_sweep_rolling beside cc_sweep, the textbook quartic and pooltool")
+        w("")
+        w("20,000 pool-like pairs (balls of radius 0.028575 m on a 2.54 x 1.27 m table, speeds 0.05..3 m/s, "
+          "rolling resistance mu g = 0.0981 m/s^2, a third of the second balls at rest), all methods on the "
+          "same pairs in the same run: cc_sweep_rolling; cc_sweep on the same pairs without friction; the "
+          "textbook quartic (Ferrari, tests/reference/textbook_quartic.c); pooltool's ball-ball collision "
+          "time (ball_ball_collision_coeffs + ptmath.roots.quartic.solve + min_real_root), one pair at a "
+          "time from Python as its event loop calls it, and its batched numba solver (quartic.solve_many) "
+          "alone. Accuracy on the same pairs and on the rolling corpus: docs/NUMERICS.md.")
+        w("")
+        w("```")
+        w("\n".join(l for l in rolling.splitlines() if not l.startswith("figure ") and not l.startswith("csv ")))
+        w("```")
+        w("")
+
     w("## How to reproduce")
     w("")
     w("```sh")
     w("bench/run.sh            # everything, writes this page (several minutes)")
     w("bench/run.sh --quick    # the headline figures only, under a minute once built")
     w("build-bench/bench/bench_pair --help; build-bench/bench/bench_world matrix|headline|scaling|features")
+    w("build-bench/bench/bench_pair_rolling dump|time; bench/pooltool_rolling.py (section 8)")
     w("build-bench/bench/bench_queries casts|walls")
+    w("CIRCLECOLLIDE_LIBRARY=build-bench/src/libcirclecollide.so PYTHONPATH=bindings/python/src \\")
+    w("  build-bench/venv/bin/python bench/python_path.py build-bench/bench   # section 7")
     w("```")
     w("")
     with open(os.path.join(docs, "BENCHMARKS.md"), "w") as f:

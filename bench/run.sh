@@ -34,7 +34,7 @@ fi
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$b2d" \
   -DCC_BUILD_TESTS=OFF -DCC_BUILD_DEMO=OFF >>"$log" 2>&1
-targets=(bench_pair bench_world bench_queries)
+targets=(bench_pair bench_pair_rolling bench_world bench_queries)
 grep -q "Box2D found" "$log" && targets+=(bench_box2d_world)
 cmake --build "$build" -j"$jobs" --target "${targets[@]}" >>"$log" 2>&1 || {
   tail -30 "$log" >&2
@@ -60,6 +60,10 @@ if [ ! -x "$venv/bin/python" ]; then
 fi
 "$venv/bin/python" -m pip install -q matplotlib billiards pymunk >>"$log" 2>&1 ||
   echo "bench: some Python peers did not install (see $log); their rows are skipped" >&2
+# pooltool (issue 12's rolling peer) pulls numba, scipy, pandas and panda3d: installed apart so
+# that its failure costs only its rows
+"$venv/bin/python" -m pip install -q pooltool-billiards >>"$log" 2>&1 ||
+  echo "bench: pooltool-billiards did not install (see $log); its rolling row is skipped" >&2
 
 out=$build/results
 rm -rf "$out"
@@ -98,6 +102,18 @@ dt=0.016666666666666666
   "$venv/bin/python" "$root/bench/peers.py" "$bin/bench_world" 1000 0.3 1 $dt "$out" billiards
 } 2>>"$log" | tee "$out/peers.txt"
 rm -f "$out"/trace-*.bin
+
+echo "== the Python path (bench/python_path.py)" | tee -a "$log"
+# the binding from the source tree on this build's shared library: Python and C run the same code
+cmake --build "$build" -j"$jobs" --target circlecollide >>"$log" 2>&1
+CIRCLECOLLIDE_LIBRARY=$(ls "$build"/src/libcirclecollide.so* | head -1) PYTHONPATH=$root/bindings/python/src \
+  "$venv/bin/python" "$root/bench/python_path.py" "$bin" 2>>"$log" | tee "$out/python_path.txt" ||
+  echo "bench: the Python path did not run (see $log)" >&2
+
+echo "== rolling pair: cc_sweep_rolling, cc_sweep, textbook quartic, pooltool (same pairs, same run)" | tee -a "$log"
+"$bin/bench_pair_rolling" dump 20000 "$out/pool_pairs.bin" >>"$log"
+"$venv/bin/python" "$root/bench/pooltool_rolling.py" "$bin/bench_pair_rolling" "$out/pool_pairs.bin" --rounds 5 \
+  --time-limit 5000 2>>"$log" | tee "$out/rolling.txt"
 
 "$venv/bin/python" "$root/bench/report.py" "$out" "$root/docs" "bench/run.sh"
 grep -h '^figure ' "$out"/*.txt

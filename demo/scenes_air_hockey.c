@@ -179,11 +179,10 @@ int demo_scene_air_hockey(demo_show *show)
     show->state = st;
     demo_rng_seed(&st->rng, show->opt->seed);
     st->scored_in = -1;
+    demo_stage_def_init(&d, show->opt->mode);
     d.max_circles = 5; /* two mallets, the puck, the two goals' sensors */
     d.max_segments = 10;
-    d.mode = show->opt->mode;
     d.restitution = 0.9;
-    d.rest_speed = 0.0;
     d.x0 = -0.1;
     d.y0 = -0.1;
     d.x1 = L + 0.1;
@@ -194,9 +193,6 @@ int demo_scene_air_hockey(demo_show *show)
     d.flash_time = 0.12;
     d.flash_radius = 2.0 * PUCK_R;
     d.flash_capacity = 256;
-    d.label = NULL;
-    d.rolling_decel = 0.0;
-    d.restitution_mix = CC_MIX_MIN;
     d.on_sensor = hockey_on_sensor;
     d.sensor_user = st;
     r = demo_stage_init(s, &d);

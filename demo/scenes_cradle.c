@@ -34,11 +34,9 @@ int demo_scene_cradle(demo_show *show)
     demo_stage *s = &show->stage[0];
     int lane, j, r;
 
+    demo_stage_def_init(&d, show->opt->mode);
     d.max_circles = 15;
     d.max_segments = 8;
-    d.mode = show->opt->mode;
-    d.restitution = 1.0;
-    d.rest_speed = 0.0;
     d.x0 = -0.6;
     d.y0 = -0.6;
     d.x1 = CRADLE_L + 0.6;
@@ -49,11 +47,6 @@ int demo_scene_cradle(demo_show *show)
     d.flash_time = 0.15;
     d.flash_radius = 1.6;
     d.flash_capacity = 256;
-    d.label = NULL;
-    d.rolling_decel = 0.0;
-    d.restitution_mix = CC_MIX_MIN;
-    d.on_sensor = NULL;
-    d.sensor_user = NULL;
     r = demo_stage_init(s, &d);
     if (r != 0)
         return r;

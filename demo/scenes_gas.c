@@ -33,11 +33,9 @@ int demo_scene_gas(demo_show *show)
     int i, j, placed = 0, r;
     const double sx = GAS_W / GAS_COLS, sy = GAS_H / GAS_ROWS;
 
+    demo_stage_def_init(&d, show->opt->mode);
     d.max_circles = GAS_N + 1;
     d.max_segments = 4;
-    d.mode = show->opt->mode;
-    d.restitution = 1.0;
-    d.rest_speed = 0.0;
     d.x0 = -2.0;
     d.y0 = -2.0;
     d.x1 = GAS_W + 2.0;
@@ -48,11 +46,6 @@ int demo_scene_gas(demo_show *show)
     d.flash_time = 0.1;
     d.flash_radius = 1.6;
     d.flash_capacity = 4096;
-    d.label = NULL;
-    d.rolling_decel = 0.0;
-    d.restitution_mix = CC_MIX_MIN;
-    d.on_sensor = NULL;
-    d.sensor_user = NULL;
     r = demo_stage_init(s, &d);
     if (r != 0)
         return r;

@@ -131,11 +131,8 @@ int demo_scene_hard_disks(demo_show *show)
     st->ly = ly;
     show->state = st;
 
+    demo_stage_def_init(&d, show->opt->mode);
     d.max_circles = HD_N;
-    d.max_segments = 0;
-    d.mode = show->opt->mode;
-    d.restitution = 1.0;
-    d.rest_speed = 0.0;
     d.x0 = 0.0;
     d.y0 = 0.0;
     d.x1 = lx;
@@ -143,14 +140,6 @@ int demo_scene_hard_disks(demo_show *show)
     d.speed_ref = 3.0 * sqrt(HD_KT); /* Rayleigh speeds: red is about the fastest 1% */
     d.impulse_ref = 1.0;
     d.trail_time = 0.0;  /* thousands of collisions a frame: no trails, no flashes */
-    d.flash_time = 0.0;
-    d.flash_radius = 0.0;
-    d.flash_capacity = 0;
-    d.label = NULL;
-    d.rolling_decel = 0.0;
-    d.restitution_mix = CC_MIX_MIN;
-    d.on_sensor = NULL;
-    d.sensor_user = NULL;
     r = demo_stage_init_periodic(s, &d, lx, ly);
     if (r != 0) {
         free(vx);

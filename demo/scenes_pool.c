@@ -170,9 +170,9 @@ int demo_scene_pool(demo_show *show)
     if (st == NULL)
         return -100;
     show->state = st;
+    demo_stage_def_init(&d, show->opt->mode);
     d.max_circles = POOL_BALLS + 6; /* the balls and the six pockets */
     d.max_segments = POOL_WALLS;
-    d.mode = show->opt->mode;
     d.restitution = POOL_BALL_E; /* what every circle and wall starts with */
     d.rest_speed = 0.01;
     d.x0 = -0.13;
@@ -185,7 +185,6 @@ int demo_scene_pool(demo_show *show)
     d.flash_time = 0.12;
     d.flash_radius = 2.2 * POOL_R;
     d.flash_capacity = 512;
-    d.label = NULL;
     d.rolling_decel = POOL_ROLL_DECEL;
     d.restitution_mix = CC_MIX_MIN; /* ball on ball min(0.95, 0.95), ball on cushion 0.75 */
     d.on_sensor = pool_on_sensor;

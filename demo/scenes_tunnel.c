@@ -55,11 +55,9 @@ int demo_scene_tunnel(demo_show *show)
     for (k = 0; k < 3; ++k) {
         demo_stage_def d;
         demo_stage *s = &show->stage[k];
+        demo_stage_def_init(&d, k == 0 ? CC_MODE_EXACT : k == 1 ? CC_MODE_SWEPT : CC_MODE_DISCRETE);
         d.max_circles = 9;
         d.max_segments = 4;
-        d.mode = k == 0 ? CC_MODE_EXACT : k == 1 ? CC_MODE_SWEPT : CC_MODE_DISCRETE;
-        d.restitution = 1.0;
-        d.rest_speed = 0.0;
         d.x0 = -0.8;
         d.y0 = -0.8;
         d.x1 = BOX_W + 0.8;
@@ -70,11 +68,6 @@ int demo_scene_tunnel(demo_show *show)
         d.flash_time = 0.15;
         d.flash_radius = 0.4;
         d.flash_capacity = 256;
-        d.label = NULL;
-        d.rolling_decel = 0.0;
-        d.restitution_mix = CC_MIX_MIN;
-        d.on_sensor = NULL;
-        d.sensor_user = NULL;
         r = demo_stage_init(s, &d);
         if (r != 0)
             return r;

@@ -70,6 +70,17 @@ static void on_sensor(const cc_sensor_event *e, void *user)
         s->def.on_sensor(e, s->def.sensor_user);
 }
 
+void demo_stage_def_init(demo_stage_def *def, int mode)
+{
+    memset(def, 0, sizeof *def); /* no trails, flashes, caption, sensor; rolling 0, CC_MIX_MIN */
+    def->max_circles = 64;
+    def->mode = mode;
+    def->restitution = 1.0;
+    def->x1 = def->y1 = 1.0;
+    def->speed_ref = def->impulse_ref = 1.0;
+    def->restitution_mix = CC_MIX_MIN;
+}
+
 int demo_stage_init(demo_stage *s, const demo_stage_def *def)
 {
     return demo_stage_init_periodic(s, def, 0.0, 0.0);

@@ -46,7 +46,7 @@ typedef struct demo_stage_def {
     double flash_radius;   /* a flash's final radius in world units */
     int flash_capacity;    /* flashes remembered at once (the oldest give way) */
     const char *label;     /* a caption for the stage, or NULL */
-    /* the world's 1.1 settings (zero them with the rest of the def when unused) */
+    /* the world's 1.1 settings (demo_stage_def_init leaves them off) */
     double rolling_decel;  /* cc_world_def.rolling_decel: the ground's deceleration */
     int restitution_mix;   /* cc_world_def.restitution_mix (CC_MIX_MIN is 0) */
     demo_sensor_fn on_sensor; /* or NULL */
@@ -81,6 +81,11 @@ typedef struct demo_stage {
     int error;            /* the first library error met, or 0 */
     const char *error_what;
 } demo_stage;
+
+/* The defaults every scene starts from (Box2D's def-struct habit): a frictionless one-material
+ * world of 64 circles and no walls in `mode`, restitution 1, the unit square shown, no trails,
+ * no flashes, no caption, no sensors. A scene sets only what it needs. */
+void demo_stage_def_init(demo_stage_def *def, int mode);
 
 /* Creates the world (memory from malloc). 0, or a negative CC_ERR_* / -100 for out of memory. */
 int demo_stage_init(demo_stage *s, const demo_stage_def *def);

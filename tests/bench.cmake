@@ -6,6 +6,10 @@ if(CC_BUILD_BENCH AND EXISTS ${PROJECT_SOURCE_DIR}/bench/CMakeLists.txt)
   add_test(NAME bench_pair_tiny COMMAND bench_pair --pairs 2000 --rounds 1)
   set_tests_properties(bench_pair_tiny PROPERTIES LABELS bench TIMEOUT 120
     PASS_REGULAR_EXPRESSION "figure sweep_ns_per_pair ")
+  # the rolling pair (issue 12): 2000 pool pairs, one round
+  add_test(NAME bench_pair_rolling_tiny COMMAND bench_pair_rolling run 2000 bench_pair_rolling_tiny.bin)
+  set_tests_properties(bench_pair_rolling_tiny PROPERTIES LABELS bench TIMEOUT 120
+    PASS_REGULAR_EXPRESSION "figure rolling_pair_over_sweep ")
   if(EXISTS ${PROJECT_SOURCE_DIR}/src/world/sources.cmake)
     # 300 circles, half a simulated second in steps of 1/60
     add_test(NAME bench_world_tiny COMMAND bench_world peer 300 0.3 0.5 0.016666666666666666)

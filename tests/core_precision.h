@@ -78,6 +78,20 @@ static inline double ulps_of(double ulps, double scale)
     return ulps * EPS * (s > 1.0 ? s : 1.0);
 }
 
+/* A sweep's CC_HIT at t with normal (nx, ny) and point (px, py), depth 0, within `ulps`: the
+ * checks of every hand-derived sweep case (circle-circle and circle-wall alike). */
+static inline void expect_hit_contact(int result, const Contact *k, double t, double nx, double ny, double px,
+                                      double py, double ulps)
+{
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CC_HIT, result, "result");
+    TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(ulps_of(ulps, t), t, k->t, "t");
+    TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(ulps_of(ulps, 1.0), nx, k->normal.x, "normal.x");
+    TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(ulps_of(ulps, 1.0), ny, k->normal.y, "normal.y");
+    TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(ulps_of(ulps, px), px, k->point.x, "point.x");
+    TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(ulps_of(ulps, py), py, k->point.y, "point.y");
+    TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(0.0, 0.0, k->depth, "depth");
+}
+
 /* actual == expected within a few ulps of the precision (relative to max(1, |expected|)) */
 #define EXPECT_NEAR(ulps, expected, actual)                                                        \
     TEST_ASSERT_DOUBLE_WITHIN(ulps_of((ulps), (double)(expected)), (double)(expected), (double)(actual))

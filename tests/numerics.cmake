@@ -11,7 +11,7 @@ find_library(CC_MPFR_LIB mpfr)
 find_library(CC_GMP_LIB gmp)
 
 if(CC_MPFR_INCLUDE AND CC_GMP_INCLUDE AND CC_MPFR_LIB AND CC_GMP_LIB)
-  add_library(cc_reference STATIC reference/reference.c reference/textbook.c)
+  add_library(cc_reference STATIC reference/reference.c reference/reference_rolling.c reference/textbook.c reference/textbook_quartic.c)
   target_include_directories(cc_reference PUBLIC reference ${CC_MPFR_INCLUDE} ${CC_GMP_INCLUDE})
   target_link_libraries(cc_reference PUBLIC circlecollide_static ${CC_MPFR_LIB} ${CC_GMP_LIB} PRIVATE cc_warnings)
   if(UNIX)

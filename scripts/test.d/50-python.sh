@@ -23,3 +23,16 @@ cd "$out/run"
 "$py" -c 'import circlecollide, sys; print("testing", circlecollide.library_path()); sys.exit("site-packages" not in circlecollide.__file__)'
 CIRCLECOLLIDE_HEADER=$root/include/circlecollide.h \
   "$py" -m pytest -q -p no:cacheprovider "$root/bindings/python/tests"
+
+# The sdist: built from a staging copy that holds the C sources (bindings/python/build_dist.sh),
+# installed by pip into a fresh venv (pip builds the library from the sdist alone, fetching only
+# the build backend from the registry), then a smoke test from outside the source tree.
+"$py" -m pip install -q --disable-pip-version-check build
+rm -rf "$out/dist" "$out/sdist-venv"
+"$root/bindings/python/build_dist.sh" "$out/dist" "$py" --sdist >"$out/dist.log" 2>&1 || {
+  cat "$out/dist.log" >&2
+  exit 1
+}
+python3 -m venv "$out/sdist-venv"
+"$out/sdist-venv/bin/python" -m pip install -q --disable-pip-version-check "$out"/dist/circlecollide-*.tar.gz
+"$out/sdist-venv/bin/python" "$root/bindings/python/tests/smoke.py"

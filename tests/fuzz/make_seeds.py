@@ -13,7 +13,10 @@ import sys
 
 SWEEP, SEG, DETECT, SEPARATE, RESPOND, RESPOND_SEG, CLOSEST = 0, 2, 4, 6, 8, 10, 12
 MANY = 14
+# rolling to rest (1.1): byte 0 from 240 (see fuzz_function in fuzz_checks.h); odd = float
+ROLL, ROLL_SEG, ROLL_ADV = 240, 242, 244
 NAN, INF = float("nan"), float("inf")
+DECELS = {"none": 0.0, "cloth": 0.5, "tiny": 1e-12, "huge": 1e9, "nan": NAN, "neg": -1.0}
 
 # (pos x, pos y, vel x, vel y, radius, mass)
 CIRCLES = {
@@ -72,6 +75,20 @@ def cases():
             a, b = CIRCLES[names[i]], CIRCLES[names[-1 - i]]
             cols.append(a[:5] + b[:5])
         yield "many-%d" % n, pack(MANY, [v for c in cols for v in c] + [10.0], count=n)
+    # rolling: a ball into a resting one, head-on, stopping short; walls; advance past the stop
+    for prec in (0, 1):
+        for dn, d in DECELS.items():
+            yield "roll-mover-still-%s-%d" % (dn, prec), pack(ROLL + prec, CIRCLES["mover"] + CIRCLES["still"] + (d, 0.0, INF))
+            yield "roll-mover-immovable-%s-%d" % (dn, prec), pack(ROLL + prec, CIRCLES["mover"] + CIRCLES["immovable"] + (d, d, 10.0))
+            yield "roll_segment-mover-%s-%d" % (dn, prec), pack(ROLL_SEG + prec, (-10, 0.5, 3, 0, 1, 2) + (0, -1, 0, 1) + (d, INF))
+            yield "roll_advance-mover-%s-%d" % (dn, prec), pack(ROLL_ADV + prec, CIRCLES["mover"] + (d, 7.0))
+        for a in ("far", "tiny", "huge", "nan", "zero_r"):
+            yield "roll-%s-mover-%d" % (a, prec), pack(ROLL + prec, CIRCLES[a] + CIRCLES["mover"] + (0.5, 0.25, INF))
+            yield "roll_segment-%s-%d" % (a, prec), pack(ROLL_SEG + prec, CIRCLES[a] + SEGMENTS["long"] + (0.5, INF))
+            yield "roll_advance-%s-%d" % (a, prec), pack(ROLL_ADV + prec, CIRCLES[a] + (0.5, 1e300))
+        # stopping exactly touching (speed 2, decel 0.5: stops after 4, radii 0.125: b at 4.25)
+        yield "roll-stop-touch-%d" % prec, pack(ROLL + prec, (0, 0, 2, 0, 0.125, 1) + (4.25, 0, 0, 0, 0.125, 1) + (0.5, 0.0, INF))
+        yield "roll-head-on-%d" % prec, pack(ROLL + prec, (0, 0, 2, 0, 1, 1) + (10, 0, -2, 0, 1, 1) + (0.5, 0.5, INF))
     # the same numbers made valid by the harness (flag bit 0)
     yield "sweep-valid-nan", pack(SWEEP, CIRCLES["nan"] + CIRCLES["mover"] + (NAN,), flags=1)
     yield "many-valid", pack(MANY, [NAN] * 20 + [1.0], flags=1, count=2)

@@ -28,6 +28,10 @@ static void tally(acc_work *w, const ref_problem *p, const ref_result *exact, in
             s->first_wrong = index; /* a hit at a time outside [0, t_max] (or NaN) is wrong whatever the answer */
         return;
     }
+    if (exact->degenerate) {
+        s->degenerate++;
+        return;
+    }
     if (code != exact->code) {
         if (ref_in_band(p, code, ACC_BAND_ULPS))
             s->in_band++;
@@ -51,6 +55,8 @@ static void tally(acc_work *w, const ref_problem *p, const ref_result *exact, in
         }
         if (w->res[s->timed] > s->max_res)
             s->max_res = w->res[s->timed];
+        if (exact->t_hi > 0.0 && ref_t_error(exact, t) / exact->t_hi > s->max_rel)
+            s->max_rel = ref_t_error(exact, t) / exact->t_hi;
         s->timed++;
     }
 }
@@ -67,6 +73,68 @@ static double median(double *v, long n)
         return 0.0;
     qsort(v, (size_t)n, sizeof *v, cmp_double);
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+void acc_problem(const corpus_case *c, int is_float, ref_problem *p)
+{
+    if (is_float) {
+        corpus_casef f;
+        corpus_to_float(c, &f);
+        if (f.rolling && f.is_segment)
+            ref_roll_segmentf(p, &f.a, f.decel_a, &f.s, f.t_max);
+        else if (f.rolling)
+            ref_roll_circlesf(p, &f.a, f.decel_a, &f.b, f.decel_b, f.t_max);
+        else if (f.is_segment)
+            ref_segmentf(p, &f.a, &f.s, f.t_max);
+        else
+            ref_circlesf(p, &f.a, &f.b, f.t_max);
+    } else {
+        if (c->rolling && c->is_segment)
+            ref_roll_segment(p, &c->a, c->decel_a, &c->s, c->t_max);
+        else if (c->rolling)
+            ref_roll_circles(p, &c->a, c->decel_a, &c->b, c->decel_b, c->t_max);
+        else if (c->is_segment)
+            ref_segment(p, &c->a, &c->s, c->t_max);
+        else
+            ref_circles(p, &c->a, &c->b, c->t_max);
+    }
+}
+
+int acc_solve(const corpus_case *c, int is_float, int textbook, int *code, double *t)
+{
+    if (is_float) {
+        corpus_casef f;
+        cc_contactf k;
+        corpus_to_float(c, &f);
+        k.t = -1.0f;
+        if (f.rolling && textbook)
+            return 0;
+        if (f.rolling && f.is_segment)
+            *code = cc_sweep_segment_rollingf(&f.a, f.decel_a, &f.s, f.t_max, &k);
+        else if (f.rolling)
+            *code = cc_sweep_rollingf(&f.a, f.decel_a, &f.b, f.decel_b, f.t_max, &k);
+        else if (f.is_segment)
+            *code = textbook ? tb_sweep_segmentf(&f.a, &f.s, f.t_max, &k) : cc_sweep_segmentf(&f.a, &f.s, f.t_max, &k);
+        else
+            *code = textbook ? tb_sweepf(&f.a, &f.b, f.t_max, &k) : cc_sweepf(&f.a, &f.b, f.t_max, &k);
+        *t = k.t;
+    } else {
+        cc_contact k;
+        k.t = -1.0;
+        if (c->rolling && c->is_segment && textbook)
+            return 0;
+        if (c->rolling && c->is_segment)
+            *code = cc_sweep_segment_rolling(&c->a, c->decel_a, &c->s, c->t_max, &k);
+        else if (c->rolling)
+            *code = textbook ? tb_sweep_rolling(&c->a, c->decel_a, &c->b, c->decel_b, c->t_max, &k)
+                             : cc_sweep_rolling(&c->a, c->decel_a, &c->b, c->decel_b, c->t_max, &k);
+        else if (c->is_segment)
+            *code = textbook ? tb_sweep_segment(&c->a, &c->s, c->t_max, &k) : cc_sweep_segment(&c->a, &c->s, c->t_max, &k);
+        else
+            *code = textbook ? tb_sweep(&c->a, &c->b, c->t_max, &k) : cc_sweep(&c->a, &c->b, c->t_max, &k);
+        *t = k.t;
+    }
+    return 1;
 }
 
 void acc_measure(uint64_t seed, int cls, uint32_t n, int is_float, int with_textbook, acc_row *row)
@@ -90,33 +158,10 @@ void acc_measure(uint64_t seed, int cls, uint32_t n, int is_float, int with_text
         for (m = 0; m < (with_textbook ? 2 : 1); m++) {
             int code;
             double t;
-            if (is_float) {
-                corpus_casef f;
-                cc_contactf k;
-                corpus_to_float(&c, &f);
-                if (m == 0 && f.is_segment)
-                    ref_segmentf(&p, &f.a, &f.s, f.t_max);
-                else if (m == 0)
-                    ref_circlesf(&p, &f.a, &f.b, f.t_max);
-                k.t = -1.0f;
-                if (f.is_segment)
-                    code = m ? tb_sweep_segmentf(&f.a, &f.s, f.t_max, &k) : cc_sweep_segmentf(&f.a, &f.s, f.t_max, &k);
-                else
-                    code = m ? tb_sweepf(&f.a, &f.b, f.t_max, &k) : cc_sweepf(&f.a, &f.b, f.t_max, &k);
-                t = k.t;
-            } else {
-                cc_contact k;
-                if (m == 0 && c.is_segment)
-                    ref_segment(&p, &c.a, &c.s, c.t_max);
-                else if (m == 0)
-                    ref_circles(&p, &c.a, &c.b, c.t_max);
-                k.t = -1.0;
-                if (c.is_segment)
-                    code = m ? tb_sweep_segment(&c.a, &c.s, c.t_max, &k) : cc_sweep_segment(&c.a, &c.s, c.t_max, &k);
-                else
-                    code = m ? tb_sweep(&c.a, &c.b, c.t_max, &k) : cc_sweep(&c.a, &c.b, c.t_max, &k);
-                t = k.t;
-            }
+            if (m == 0)
+                acc_problem(&c, is_float, &p);
+            if (!acc_solve(&c, is_float, m, &code, &t))
+                continue; /* no textbook method for this case */
             if (m == 0)
                 (void)ref_solve(&p, &exact);
             tally(&w[m], &p, &exact, code, t, eps, (long)i);

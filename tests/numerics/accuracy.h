@@ -23,6 +23,9 @@ typedef struct acc_stats {
     double med_err;
     double max_res;  /* residual | |pb(t) - pa(t)| - R | / R at the returned t */
     double med_res;
+    double max_rel;  /* relative t error |t - t*| / t* (t* > 0) */
+    long degenerate; /* rolling cases whose reference decision was a tie (ref_result.degenerate):
+                        not judged */
     long worst;      /* index of the case with max_err; -1 none */
     long first_wrong; /* index of the first disagreement outside the band; -1 none */
 } acc_stats;
@@ -32,7 +35,16 @@ typedef struct acc_row {
 } acc_row;
 
 /* Cases [0, n) of class cls for the seed, in double (is_float = 0) or float; the textbook
- * columns only when with_textbook. */
+ * columns only when with_textbook (rolling classes: the textbook quartic, for two circles in
+ * double only; elsewhere its columns stay empty). */
+/* The reference problem of a corpus case (in the given precision), and one method's answer
+ * (textbook = 0: the library's; 1: the textbook's): returns 0 when there is no textbook method
+ * for the case. */
+struct corpus_case;
+struct ref_problem;
+void acc_problem(const struct corpus_case *c, int is_float, struct ref_problem *p);
+int acc_solve(const struct corpus_case *c, int is_float, int textbook, int *code, double *t);
+
 void acc_measure(uint64_t seed, int cls, uint32_t n, int is_float, int with_textbook, acc_row *row);
 
 #endif

@@ -10,13 +10,16 @@
 
 #include "circlecollide.h"
 
-enum { CORPUS_CLASSES = 15 };
+/* classes 0..14: the straight sweeps; CORPUS_ROLL_FIRST..: rolling to rest (issue 12) */
+enum { CORPUS_CLASSES = 26, CORPUS_ROLL_FIRST = 15 };
 
 typedef struct corpus_case {
     int is_segment; /* 1: circle a against segment s; 0: circle a against circle b */
     cc_circle a, b;
     cc_segment s;
     double t_max;
+    int rolling;              /* 1: cc_sweep_rolling / cc_sweep_segment_rolling with the decelerations */
+    double decel_a, decel_b;  /* a's (the circle's, against a segment), b's */
 } corpus_case;
 
 /* A float problem: the same case rounded to float (cases for float are generated with ranges
@@ -26,6 +29,8 @@ typedef struct corpus_casef {
     cc_circlef a, b;
     cc_segmentf s;
     float t_max;
+    int rolling;
+    float decel_a, decel_b;
 } corpus_casef;
 
 const char *corpus_class_name(int cls);

@@ -11,6 +11,8 @@
 #include <gmp.h>
 #include <mpfr.h>
 
+#include "reference_internal.h"
+
 #define REF_PREC 256    /* bits for values: t to ~2^-250 relative */
 #define MARGIN_PREC 2400 /* bits for band margins: a few-ulp change of any input shows */
 #define MAX_MARGINS 16
@@ -178,7 +180,7 @@ static int disc_decide(const mpq_t dpx, const mpq_t dpy, const mpq_t dvx, const 
         mpfr_set_q(t, *C, MPFR_RNDN);
         mpfr_div(t, t, b, MPFR_RNDN);
         mpfr_set_q(b, R, MPFR_RNDN);
-        mpfr_div(closing, sd, b, MPFR_RNDN);
+        mpfr_div(closing, sd, b, MPFR_RNDN); /* (assigned before t is read for the normal) */
         mpfr_set_q(x, dvx, MPFR_RNDN);
         mpfr_mul(x, x, t, MPFR_RNDN);
         mpfr_set_q(sd, dpx, MPFR_RNDN);
@@ -256,6 +258,7 @@ static int solve_circles(const ref_problem *p, ref_result *out)
     if (out != NULL && code == CC_HIT) {
         set_time(out, t);
         out->cond = condition(*dpx, *dpy, *dvx, *dvy, *R, t, closing);
+        out->closing = mpfr_get_d(closing, MPFR_RNDN);
     }
     mpfr_clears(t, closing, (mpfr_ptr)0);
     qs_clear(&s);
@@ -395,6 +398,7 @@ static int solve_segment(const ref_problem *p, ref_result *out)
     }
     if (out != NULL && code == CC_HIT) {
         set_time(out, best);
+        out->closing = mpfr_get_d(bclosing, MPFR_RNDN);
         out->feature = feature;
         out->normal_x = nx, out->normal_y = ny;
         if (feature >= 0) {
@@ -424,7 +428,10 @@ int ref_solve(const ref_problem *p, ref_result *out)
         memset(out, 0, sizeof *out);
         out->feature = -1;
     }
-    code = p->kind == REF_CIRCLES ? solve_circles(p, out) : solve_segment(p, out);
+    if (p->kind == REF_ROLL_CIRCLES || p->kind == REF_ROLL_SEGMENT)
+        code = ref__roll_solve(p, out);
+    else
+        code = p->kind == REF_CIRCLES ? solve_circles(p, out) : solve_segment(p, out);
     if (out != NULL)
         out->code = code;
     return code;
@@ -445,6 +452,8 @@ double ref_residual(const ref_problem *p, double t)
     const double *x = p->x;
     mpfr_t a, b;
     double res;
+    if (p->kind == REF_ROLL_CIRCLES || p->kind == REF_ROLL_SEGMENT)
+        return ref__roll_residual(p, t);
     qs_init(&s);
     mpfr_inits2(REF_PREC, a, b, (mpfr_ptr)0);
     mpq_set_d(*T, t);
@@ -519,10 +528,12 @@ static int disc_margins(mpfr_t *m, mpfr_t dpx, mpfr_t dpy, mpfr_t dvx, mpfr_t dv
     return 4;
 }
 
-static int margins(const ref_problem *p, const double *x, mpfr_t *m, mpfr_t *v, mpfr_t *tmp)
+int ref__margins(const ref_problem *p, const double *x, mpfr_t *m, mpfr_t *v, mpfr_t *tmp)
 {
     double tlim = x[p->n - 1] < (p->is_float ? FLT_MAX : DBL_MAX) ? x[p->n - 1] : (p->is_float ? FLT_MAX : DBL_MAX);
     int i, k = 0;
+    if (p->kind == REF_ROLL_CIRCLES || p->kind == REF_ROLL_SEGMENT)
+        return ref__roll_margins(p, x, m, v, tmp);
     if (p->kind == REF_CIRCLES) {
         mpfr_set_d(v[0], x[5], MPFR_RNDN), mpfr_sub_d(v[0], v[0], x[0], MPFR_RNDN);
         mpfr_set_d(v[1], x[6], MPFR_RNDN), mpfr_sub_d(v[1], v[1], x[1], MPFR_RNDN);
@@ -607,7 +618,16 @@ static double step_ulps(double x, double s, int is_float)
     return isfinite(y) ? y : x;
 }
 
-static int is_radius(const ref_problem *p, int i) { return i == 4 || (p->kind == REF_CIRCLES && i == 9); }
+static int is_radius(const ref_problem *p, int i)
+{
+    return i == 4 || ((p->kind == REF_CIRCLES || p->kind == REF_ROLL_CIRCLES) && i == 9);
+}
+
+/* a deceleration (rolling problems): must stay >= 0 */
+static int is_decel(const ref_problem *p, int i)
+{
+    return (p->kind == REF_ROLL_CIRCLES && (i == 10 || i == 11)) || (p->kind == REF_ROLL_SEGMENT && i == 9);
+}
 
 /* the problem with every input i moved by s * g[i] ulps; 0 if that makes a radius <= 0 */
 static int moved(const ref_problem *p, const double *g, double s, ref_problem *q)
@@ -617,6 +637,8 @@ static int moved(const ref_problem *p, const double *g, double s, ref_problem *q
     for (i = 0; i < p->n; i++) {
         q->x[i] = step_ulps(p->x[i], s * g[i], p->is_float);
         if (is_radius(p, i) && !(q->x[i] > 0.0))
+            return 0;
+        if (is_decel(p, i) && !(q->x[i] >= 0.0))
             return 0;
     }
     return 1;
@@ -646,7 +668,7 @@ static int band_search(const ref_problem *p, const want *w, int k)
      * 1..k and by the first-order amount that just takes m_j through zero. */
     static const double whole[] = {1, 2, 3, 4, 6, 8};
     mpfr_t m0[MAX_MARGINS], m1[MAX_MARGINS], v[10], tmp[8];
-    double delta[MAX_MARGINS][11], g[11], e[11];
+    double delta[MAX_MARGINS][13], g[13], e[13];
     int nm, i, j, l, dir, found = 0;
     ref_problem q;
     if (satisfies(p, w))
@@ -657,11 +679,11 @@ static int band_search(const ref_problem *p, const want *w, int k)
         mpfr_init2(v[i], MARGIN_PREC);
     for (i = 0; i < 8; i++)
         mpfr_init2(tmp[i], MARGIN_PREC);
-    nm = margins(p, p->x, m0, v, tmp);
+    nm = ref__margins(p, p->x, m0, v, tmp);
     for (i = 0; i < p->n; i++) {
         q = *p;
         q.x[i] = step_ulps(p->x[i], k, p->is_float);
-        (void)margins(p, q.x, m1, v, tmp);
+        (void)ref__margins(p, q.x, m1, v, tmp);
         for (j = 0; j < nm; j++) {
             mpfr_sub(m1[j], m1[j], m0[j], MPFR_RNDN);
             delta[j][i] = mpfr_get_d(m1[j], MPFR_RNDN); /* change of m_j over k ulps of input i */
@@ -720,7 +742,7 @@ int ref_t_in_band(const ref_problem *p, double t, double tol, int k)
 {
     want w;
     ref_result r;
-    if (p->kind != REF_SEGMENT || ref_solve(p, &r) != CC_HIT)
+    if ((p->kind != REF_SEGMENT && p->kind != REF_ROLL_SEGMENT) || ref_solve(p, &r) != CC_HIT)
         return 0;
     w.code = CC_HIT, w.check_t = 1, w.not_feature = r.feature, w.t = t, w.tol = tol;
     return band_search(p, &w, k);

@@ -10,15 +10,17 @@
 
 #include "circlecollide.h"
 
-enum { REF_CIRCLES = 0, REF_SEGMENT = 1 };
+enum { REF_CIRCLES = 0, REF_SEGMENT = 1, REF_ROLL_CIRCLES = 2, REF_ROLL_SEGMENT = 3 };
 
 typedef struct ref_problem {
-    int kind;     /* REF_CIRCLES or REF_SEGMENT */
+    int kind;     /* REF_CIRCLES, REF_SEGMENT, or their rolling versions (reference_rolling.c) */
     int is_float; /* inputs are floats (widened exactly): t beyond FLT_MAX is unrepresentable */
     int n;        /* number of scalars in x */
     /* REF_CIRCLES: pa.x pa.y va.x va.y ra pb.x pb.y vb.x vb.y rb t_max
-     * REF_SEGMENT: p.x p.y v.x v.y r a.x a.y b.x b.y t_max */
-    double x[11];
+     * REF_SEGMENT: p.x p.y v.x v.y r a.x a.y b.x b.y t_max
+     * REF_ROLL_CIRCLES: pa.x pa.y va.x va.y ra pb.x pb.y vb.x vb.y rb decel_a decel_b t_max
+     * REF_ROLL_SEGMENT: p.x p.y v.x v.y r a.x a.y b.x b.y decel t_max */
+    double x[13];
 } ref_problem;
 
 typedef struct ref_result {
@@ -32,12 +34,29 @@ typedef struct ref_result {
      * causes; HUGE_VAL at grazing contact. */
     double cond;
     double normal_x, normal_y; /* exact unit normal at t (rounded), for CC_HIT */
+    double closing;   /* closing speed at contact (CC_HIT), rounded */
+    /* Rolling problems only: 1 when a decision was a tie at the working precision (a margin
+     * below 2^-(REF_ROLL_PREC - 70) of its scale: a tangency, a touch exactly at a stop or at
+     * t_max), taken as exactly zero; such cases are counted apart, not measured. */
+    int degenerate;
 } ref_result;
 
 void ref_circles(ref_problem *p, const cc_circle *a, const cc_circle *b, double t_max);
 void ref_circlesf(ref_problem *p, const cc_circlef *a, const cc_circlef *b, float t_max);
 void ref_segment(ref_problem *p, const cc_circle *c, const cc_segment *s, double t_max);
 void ref_segmentf(ref_problem *p, const cc_circlef *c, const cc_segmentf *s, float t_max);
+
+/* Rolling to rest (cc_sweep_rolling, cc_sweep_segment_rolling and the f versions): the same
+ * questions for decelerating circles (reference_rolling.c). Decisions and times there are
+ * computed with MPFR at REF_ROLL_PREC bits (the rolling coefficient decel / (2 |v|) is
+ * irrational, so rationals cannot hold them), not with exact rationals: see ref_result's
+ * `degenerate`. */
+void ref_roll_circles(ref_problem *p, const cc_circle *a, double decel_a, const cc_circle *b, double decel_b,
+                      double t_max);
+void ref_roll_circlesf(ref_problem *p, const cc_circlef *a, float decel_a, const cc_circlef *b, float decel_b,
+                       float t_max);
+void ref_roll_segment(ref_problem *p, const cc_circle *c, double decel, const cc_segment *s, double t_max);
+void ref_roll_segmentf(ref_problem *p, const cc_circlef *c, float decel, const cc_segmentf *s, float t_max);
 
 /* The exact answer. A hit later than the largest finite number of the inputs' precision is a
  * miss (no such t can be returned). Returns out->code. */

@@ -20,6 +20,10 @@
 
 int tb_sweep(const cc_circle *a, const cc_circle *b, double t_max, cc_contact *out);
 int tb_sweep_segment(const cc_circle *c, const cc_segment *s, double t_max, cc_contact *out);
+/* Two rolling circles (textbook_quartic.c): the quartic before the first stop solved in closed
+ * form (Ferrari), as event-driven billiards code writes it; double only. */
+int tb_sweep_rolling(const cc_circle *a, double decel_a, const cc_circle *b, double decel_b, double t_max,
+                     cc_contact *out);
 int tb_sweepf(const cc_circlef *a, const cc_circlef *b, float t_max, cc_contactf *out);
 int tb_sweep_segmentf(const cc_circlef *c, const cc_segmentf *s, float t_max, cc_contactf *out);
 

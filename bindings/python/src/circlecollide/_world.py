@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+import copy as _copy
 import ctypes
 import dataclasses
+import struct
+import sys
+import threading
 from dataclasses import dataclass
-from typing import Any, Callable, Iterable, List, Literal, Optional
+from typing import Any, Callable, Dict, Iterable, List, Literal, Optional
 
 import numpy as np
 
@@ -111,6 +115,34 @@ class CastHit:
 ContactCallback = Callable[[ContactEvent], None]
 SensorCallback = Callable[[SensorEvent], None]
 
+# ---- the callback trampolines ------------------------------------------------------------------
+# The C world keeps the def's function pointers (and user pointer) in its own memory, and a copy
+# of that memory keeps them too. So every World shares the same two trampolines, made once per
+# process, with user NULL: a copy's memory then points at trampolines that are as valid for it
+# as for the original. The trampolines find the World to call back through the thread's active
+# world, which each call that may fire the callbacks sets around its C call (a stack: a callback
+# of one world may step another).
+_active = threading.local()
+
+
+def _contact_trampoline(event: Any, user: Any) -> None:  # called from C: must never raise
+    w = getattr(_active, "world", None)
+    if w is not None:
+        w._dispatch(event)
+
+
+def _sensor_trampoline(event: Any, user: Any) -> None:  # called from C: must never raise
+    w = getattr(_active, "world", None)
+    if w is not None:
+        w._dispatch_sensor(event)
+
+
+_CONTACT_TRAMPOLINE = _lib.cc_contact_fn(_contact_trampoline)
+_SENSOR_TRAMPOLINE = _lib.cc_sensor_fn(_sensor_trampoline)
+
+#: the pickle format of a World (bumped when its state tuple changes)
+_PICKLE_FORMAT = 1
+
 
 class World:
     """A simulation of up to ``max_circles`` circles and ``max_segments`` static walls.
@@ -134,6 +166,12 @@ class World:
     ``set_positions``, ``set_velocities``) returns (the C call itself cannot be interrupted;
     later events of that call are not reported). The world's memory is a buffer owned by this
     object.
+
+    ``copy.copy(world)`` (or ``world.copy()``) and ``copy.deepcopy(world)`` make an independent
+    world in the same state (a copy of the C memory, which is position-independent), with the
+    same callbacks (deep-copied by ``deepcopy``); ``pickle`` carries a world made without
+    callbacks to another process (one made with callbacks refuses: ``TypeError``). A copy or an
+    unpickled world steps bit for bit as the original would.
     """
 
     def __init__(
@@ -189,19 +227,15 @@ class World:
         self._on_sensor = on_sensor
         self._error: Optional[BaseException] = None
         self._in_callback = 0  # > 0 while on_contact or on_sensor runs
-        # The def holds the callbacks for the world's lifetime, so the world always gets the
-        # trampolines; they read self._on_contact / self._on_sensor at each call, which makes
-        # the attributes plain settable properties. Kept on self so that ctypes never frees
-        # them while C holds their addresses.
+        # The def holds the callbacks for the world's lifetime, so a world with callbacks always
+        # gets the (shared) trampolines; they call self._on_contact / self._on_sensor at each
+        # event, which makes the attributes plain settable properties.
         self._callbacks = bool(callbacks) if callbacks is not None else (on_contact is not None or on_sensor is not None)
         if not self._callbacks and (on_contact is not None or on_sensor is not None):
             raise ValueError("World: on_contact/on_sensor given with callbacks=False")
-        self._trampoline = _lib.cc_contact_fn(self._dispatch) if self._callbacks else _lib.cc_contact_fn()
-        self._sensor_trampoline = (
-            _lib.cc_sensor_fn(self._dispatch_sensor)
-            if self._callbacks and self._lib_def_size >= _lib.field_end(_lib.cc_world_def, "on_sensor")
-            else _lib.cc_sensor_fn()
-        )
+        self._has_sensor_fn = self._callbacks and self._lib_def_size >= _lib.field_end(_lib.cc_world_def, "on_sensor")
+        self._trampoline = _CONTACT_TRAMPOLINE if self._callbacks else _lib.cc_contact_fn()
+        self._sensor_trampoline = _SENSOR_TRAMPOLINE if self._has_sensor_fn else _lib.cc_sensor_fn()
         d.on_contact = self._trampoline
         d.on_sensor = self._sensor_trampoline
         d.user = None
@@ -209,6 +243,7 @@ class World:
         if size == 0:
             raise CircleCollideError(_lib.ERR_INVALID, "World")
         # 16-byte alignment: over-allocate and start at the first aligned address.
+        self._size = int(size)
         self._buffer = (ctypes.c_char * (size + 16))()
         base = ctypes.addressof(self._buffer)
         self._addr = base + (-base % 16)
@@ -217,19 +252,121 @@ class World:
         if not w:
             raise CircleCollideError(status.value or _lib.ERR_INVALID, "World")
         self._w = ctypes.c_void_p(w)
+        # the validated def: what a copy or an unpickled world is rebuilt from (before its memory
+        # is copied in)
+        self._def_args: Dict[str, Any] = dict(
+            max_circles=d.max_circles,
+            max_segments=d.max_segments,
+            mode=mode,
+            restitution=d.restitution,
+            rest_speed=d.rest_speed,
+            cell_size=d.cell_size,
+            max_events=None if max_events is None else int(d.max_events),
+            rolling_decel=d.rolling_decel,
+            restitution_mix=restitution_mix,
+            period=(px, py),
+        )
         self.max_circles = d.max_circles
         self.max_segments = d.max_segments
         self.mode = mode
         self.period: Vec2 = Vec2(px, py)
         self._scratch = (_lib.cc_circle * max(1, self.max_circles))()
         self._ids = (ctypes.c_int * max(1, self.max_circles))()
+        # cc_circle is 6 doubles (pos.x, pos.y, vel.x, vel.y, radius, mass): one float64 view of
+        # the scratch rows, made once (np.ctypeslib.as_array per call parses the struct's
+        # format each time: about half the cost of reading positions)
+        self._table_view = np.frombuffer(self._scratch, dtype=np.float64).reshape(-1, 6)
 
     def __repr__(self) -> str:
         return f"World(max_circles={self.max_circles}, mode={self.mode!r}, circles={len(self)}, time={self.time!r})"
 
+    # ---- copies and pickles -------------------------------------------------------------
+    # The C world is position-independent (the header's "Memory": a memcpy of its bytes to other
+    # aligned memory of the same size is a valid world), so a copy is a new World of the same
+    # def with the bytes copied in, and a pickle carries the bytes. Stepping a copy gives, bit
+    # for bit, what stepping the original gives.
+
+    def _refuse_mid_call(self, what: str) -> None:
+        if self._in_callback:
+            raise _errors.invalid(
+                what,
+                f"{what} called from a callback (on_contact/on_sensor): the world is in the middle of a call; "
+                "copy it after the call that fired the callback returns",
+            )
+
+    def _memory(self) -> bytes:
+        return ctypes.string_at(self._addr, self._size)
+
+    def _clone(self, on_contact: Optional[ContactCallback], on_sensor: Optional[SensorCallback]) -> "World":
+        self._refuse_mid_call("copy")
+        new = World(**self._def_args, callbacks=self._callbacks)
+        if new._size != self._size:  # the same library, the same def: cannot happen
+            raise RuntimeError(f"circlecollide: a copy's world has {new._size} bytes, the original {self._size}")
+        ctypes.memmove(new._addr, self._addr, self._size)
+        new._on_contact, new._on_sensor = on_contact, on_sensor
+        return new
+
+    def __copy__(self) -> "World":
+        """``copy.copy``: an independent world in the same state (its own memory: stepping one
+        does not move the other), calling the same ``on_contact`` / ``on_sensor`` objects."""
+        return self._clone(self._on_contact, self._on_sensor)
+
+    def __deepcopy__(self, memo: Dict[int, Any]) -> "World":
+        """``copy.deepcopy``: as ``copy.copy``, with the callbacks deep-copied too (functions
+        stay themselves, bound methods get a deep copy of their object)."""
+        new = self._clone(None, None)
+        memo[id(self)] = new  # a callback that refers back to this world gets the copy
+        new._on_contact = _copy.deepcopy(self._on_contact, memo)
+        new._on_sensor = _copy.deepcopy(self._on_sensor, memo)
+        return new
+
+    def copy(self) -> "World":
+        """Same as ``copy.copy(world)``: an independent world in the same state."""
+        return self.__copy__()
+
+    def __reduce__(self) -> Any:
+        """Pickling: the def and the world's memory, with what checks that the memory fits the
+        library that unpickles it (its version, pointer size, byte order, the world's size and
+        state hash).
+
+        A World made with callbacks (``on_contact``/``on_sensor`` given, or ``callbacks=True``)
+        does not pickle: its C memory holds the address of this process's callback trampoline,
+        which means nothing in another process (pickling raises ``TypeError``; ``copy.deepcopy``
+        copies such a world within the process). Make the world with ``callbacks=False`` (the
+        default when no callback is given) to pickle it.
+        """
+        if self._callbacks:
+            raise TypeError(
+                "cannot pickle a World made with callbacks: its C memory holds the address of this process's "
+                "callback trampoline, meaningless in another process. copy.deepcopy copies it within the "
+                "process; a World made without callbacks (callbacks=False, the default when none is given) pickles"
+            )
+        self._refuse_mid_call("pickle")
+        state = {
+            "format": _PICKLE_FORMAT,
+            "library": _lib.lib.cc_version_string().decode(),
+            "platform": _platform(),
+            "def": dict(self._def_args),
+            "memory": self._memory(),
+            "hash": self.hash(),
+        }
+        return (_unpickle_world, (state,))
+
     # ---- contact callback ---------------------------------------------------------------
 
-    def _dispatch(self, event: Any, user: Any) -> None:  # called from C: must never raise
+    def _call(self, fn: Callable[..., int], *args: Any) -> int:
+        """Calls a C function that may fire the callbacks, with this world the thread's active
+        one (what the shared trampolines call back)."""
+        if not self._callbacks:
+            return fn(*args)
+        prev = getattr(_active, "world", None)
+        _active.world = self
+        try:
+            return fn(*args)
+        finally:
+            _active.world = prev
+
+    def _dispatch(self, event: Any) -> None:  # called from C: must never raise
         if self._error is not None or self._on_contact is None:
             return
         self._in_callback += 1
@@ -245,7 +382,7 @@ class World:
         finally:
             self._in_callback -= 1
 
-    def _dispatch_sensor(self, event: Any, user: Any) -> None:  # called from C: must never raise
+    def _dispatch_sensor(self, event: Any) -> None:  # called from C: must never raise
         if self._error is not None or self._on_sensor is None:
             return
         self._in_callback += 1
@@ -283,7 +420,7 @@ class World:
         self._mutating("add_circle")
         c = circle_to_c(circle)
         self._error = None
-        return self._firing(L.cc_world_add_circle(self._w, byref(c)), "add_circle")
+        return self._firing(self._call(L.cc_world_add_circle, self._w, byref(c)), "add_circle")
 
     def add_segment(self, p: Iterable[float], q: Iterable[float]) -> int:
         """Adds a static wall from p to q; returns its id."""
@@ -308,7 +445,7 @@ class World:
         self._mutating("set_circle")
         c = circle_to_c(circle)
         self._error = None
-        self._firing(L.cc_world_set_circle(self._w, _c_int(id, "id"), byref(c)), "set_circle")
+        self._firing(self._call(L.cc_world_set_circle, self._w, _c_int(id, "id"), byref(c)), "set_circle")
 
     def segment(self, id: int) -> tuple[Vec2, Vec2]:
         """The wall's end points."""
@@ -324,7 +461,7 @@ class World:
         self._mutating("step")
         dt = _errors.nonneg_finite(dt, "dt", "step")
         self._error = None
-        code = self._firing(L.cc_world_step(self._w, dt), "step")
+        code = self._firing(self._call(L.cc_world_step, self._w, dt), "step")
         return code != _lib.EVENT_LIMIT
 
     @property
@@ -358,7 +495,7 @@ class World:
             raise TypeError(f"on_sensor must be callable or None, got {fn!r}")
         if fn is not None and not self._callbacks:
             raise ValueError("on_sensor cannot be set on a World made without callbacks (pass callbacks=True)")
-        if fn is not None and not self._sensor_trampoline:
+        if fn is not None and not self._has_sensor_fn:
             raise NotImplementedError("circlecollide: the C library loaded has no cc_world_def.on_sensor")
         self._on_sensor = fn
 
@@ -407,7 +544,9 @@ class World:
             1 if new.sensor else 0,
         )
         self._error = None
-        self._firing(L.cc_world_set_circle_props(self._w, _c_int(id, "id"), byref(p)), "set_circle_props")
+        self._firing(
+            self._call(L.cc_world_set_circle_props, self._w, _c_int(id, "id"), byref(p)), "set_circle_props"
+        )
         return self.circle_props(id)
 
     def segment_props(self, id: int) -> SegmentProps:
@@ -502,9 +641,8 @@ class World:
 
     def _table(self) -> np.ndarray:
         n = check(L.cc_world_get_circles(self._w, self._ids, self._scratch, len(self._scratch)), "get_circles")
-        n = min(n, len(self._scratch))
-        # cc_circle is 6 doubles: pos.x, pos.y, vel.x, vel.y, radius, mass
-        return np.ctypeslib.as_array(self._scratch).view(np.float64).reshape(-1, 6)[:n].copy()
+        # a view of the scratch rows (the callers copy what they return)
+        return self._table_view[: min(n, len(self._scratch))]
 
     @property
     def ids(self) -> List[int]:
@@ -579,7 +717,7 @@ class World:
                 c.pos.x, c.pos.y = a[i, 0], a[i, 1]
             else:
                 c.vel.x, c.vel.y = a[i, 0], a[i, 1]
-            code = L.cc_world_set_circle(self._w, cid, byref(c))
+            code = self._call(L.cc_world_set_circle, self._w, cid, byref(c))
             if code < 0:
                 self._error = None
                 raise CircleCollideError(code, f"{context}: row {i} (circle {cid})")
@@ -598,6 +736,32 @@ class World:
         m = t[:, 5]
         movable = np.isfinite(m)
         return Vec2(float(np.sum(m[movable] * t[movable, 2])), float(np.sum(m[movable] * t[movable, 3])))
+
+
+def _platform() -> str:
+    """What the layout of a world's memory depends on besides the library's version."""
+    return f"{struct.calcsize('P') * 8}-bit {sys.byteorder}-endian"
+
+
+def _unpickle_world(state: Dict[str, Any]) -> World:
+    """Rebuilds a pickled World: a new world of the same def, the pickled memory copied in,
+    after checking that this library can read it."""
+    if state.get("format") != _PICKLE_FORMAT:
+        raise ValueError(f"circlecollide: World pickle format {state.get('format')!r}, this version reads {_PICKLE_FORMAT}")
+    here = _lib.lib.cc_version_string().decode()
+    if state["library"] != here or state["platform"] != _platform():
+        raise ValueError(
+            f"circlecollide: this World was pickled with C library {state['library']} ({state['platform']}); "
+            f"the one loaded is {here} ({_platform()}): a world's memory moves only between equal libraries"
+        )
+    w = World(**state["def"])
+    memory = state["memory"]
+    if len(memory) != w._size:
+        raise ValueError(f"circlecollide: the pickled world has {len(memory)} bytes, its def needs {w._size}")
+    ctypes.memmove(w._addr, memory, w._size)
+    if w.hash() != state["hash"]:
+        raise ValueError("circlecollide: the unpickled world's state hash differs from the pickled one's (corrupt pickle?)")
+    return w
 
 
 def _frozen(a: np.ndarray) -> np.ndarray:

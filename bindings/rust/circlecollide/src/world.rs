@@ -680,6 +680,48 @@ impl<'cb> World<'cb> {
     }
 }
 
+impl World<'_> {
+    /// An independent world in the same state: a copy of the C world's memory (which stores no
+    /// address into itself, so a copy of its bytes is a valid world). Stepping the copy gives,
+    /// bit for bit, what stepping `self` gives.
+    ///
+    /// A world made with callbacks is refused (`ErrorKind::Invalid`): its memory holds the
+    /// pointer to this world's closures (boxed `FnMut`s, which cannot be cloned), so a copy
+    /// would call back into `self`'s. `Clone` is not implemented for that reason.
+    ///
+    /// ```
+    /// use circlecollide::*;
+    /// let mut w = World::new(&WorldDef::default()).unwrap();
+    /// w.add_circle(&Circle::new(Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), 1.0)).unwrap();
+    /// w.add_circle(&Circle::new(Vec2::new(10.0, 0.0), Vec2::new(-1.0, 0.0), 1.0)).unwrap();
+    /// let mut c = w.try_clone().unwrap();
+    /// w.step(10.0).unwrap();
+    /// assert_ne!(c.hash(), w.hash()); // the copy did not move
+    /// c.step(10.0).unwrap();
+    /// assert_eq!(c.hash(), w.hash());
+    /// ```
+    pub fn try_clone(&self) -> Result<World<'static>> {
+        if !self.slot.is_null() {
+            return Err(Error { code: sys::CC_ERR_INVALID });
+        }
+        let memory = self._memory.clone();
+        // the world starts at the buffer's start (cc_world_init returns its memory argument)
+        let offset = self.w.as_ptr() as usize - self._memory.as_ptr() as usize;
+        let mut world = World {
+            w: NonNull::dangling(),
+            slot: core::ptr::null_mut(),
+            capacity: self.capacity,
+            _memory: memory,
+            _cb: PhantomData,
+        };
+        // SAFETY: offset is within the buffer (the same as in self's, of the same length), and the
+        // new buffer is 16-byte aligned like the old one.
+        let p = unsafe { world._memory.as_mut_ptr().cast::<u8>().add(offset) };
+        world.w = NonNull::new(p.cast()).ok_or(Error { code: sys::CC_ERR_MEMORY })?;
+        Ok(world)
+    }
+}
+
 /// Runs a query into a buffer, growing it to the count the query reports.
 fn collect_ids(mut query: impl FnMut(&mut [CircleId]) -> Result<usize>) -> Result<Vec<CircleId>> {
     let mut ids = vec![CircleId(-1); 32];

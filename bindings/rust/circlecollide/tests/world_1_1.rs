@@ -468,3 +468,37 @@ fn queries_and_casts_see_across_the_period() {
     let h = w.cast_circle(v(7.0, 5.0), 0.5, v(4.0, 0.0), u32::MAX).unwrap().unwrap();
     assert!(h.what == Other::Circle(a) && close(h.t, 0.625) && close(h.normal.x, 1.0), "{h:?}");
 }
+
+#[test]
+fn a_clone_steps_bit_for_bit_like_the_original() {
+    for mode in [Mode::Exact, Mode::Swept, Mode::Discrete] {
+        let d = WorldDef { mode, restitution: 0.9, rolling_decel: 0.05, ..def(40, 4) };
+        let mut w = World::new(&d).unwrap();
+        for (p, q) in [((0.0, 0.0), (20.0, 0.0)), ((20.0, 0.0), (20.0, 20.0)), ((20.0, 20.0), (0.0, 20.0)), ((0.0, 20.0), (0.0, 0.0))] {
+            w.add_segment(&Segment::new(v(p.0, p.1), v(q.0, q.1))).unwrap();
+        }
+        for i in 0..36 {
+            let (x, y) = (1.5 + (i % 6) as f64 * 3.0, 1.5 + (i / 6) as f64 * 3.0);
+            let vel = v(((i * 7919) % 13) as f64 - 6.0, ((i * 104729) % 11) as f64 - 5.0);
+            w.add_circle(&Circle::new(v(x, y), vel, 0.6 + 0.02 * i as f64)).unwrap();
+        }
+        w.step(0.7).unwrap(); // mid-flight: events predicted and queued
+        let mut c = w.try_clone().unwrap();
+        assert_eq!(c.hash(), w.hash());
+        for _ in 0..30 {
+            w.step(0.13).unwrap();
+            c.step(0.13).unwrap();
+            assert_eq!(c.hash(), w.hash(), "{mode:?}");
+            assert_eq!(format!("{:?}", c.circles()), format!("{:?}", w.circles()));
+        }
+        assert!(w.stats().collisions > 0);
+        drop(w); // the clone owns its memory
+        c.step(1.0).unwrap();
+    }
+}
+
+#[test]
+fn a_world_with_callbacks_refuses_to_clone() {
+    let w = World::with_callback(&def(2, 0), |_: &ContactEvent| {}).unwrap();
+    assert_eq!(w.try_clone().unwrap_err().kind(), ErrorKind::Invalid);
+}

@@ -1,0 +1,127 @@
+# The two-file distribution (scripts/amalgamate.sh, issue 17): dist/circlecollide.c + .h are
+# written into the build folder, compiled alone as C99 and as C++17 with every warning an error
+# (C++17: the sources' hexadecimal float literals), checked to export only the header's cc_
+# functions (amalgamation_exports), and the C tests that reach only the public header run again
+# linked against it instead of the library (their names end in _amalgamation; ctest -L amalgamation).
+find_package(Python3 COMPONENTS Interpreter)
+if(NOT Python3_Interpreter_FOUND)
+  message(STATUS "circlecollide: no python3, the amalgamation tests are not built")
+  return()
+endif()
+
+set(_amal ${CMAKE_CURRENT_BINARY_DIR}/amalgamation)
+file(GLOB_RECURSE _amal_inputs CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/src/*)
+add_custom_command(OUTPUT ${_amal}/circlecollide.c ${_amal}/circlecollide.h
+  COMMAND ${Python3_EXECUTABLE} ${PROJECT_SOURCE_DIR}/scripts/amalgamate.py --out ${_amal}
+  DEPENDS ${_amal_inputs} ${PROJECT_SOURCE_DIR}/include/circlecollide.h
+          ${PROJECT_SOURCE_DIR}/scripts/amalgamate.py
+  COMMENT "Writing the amalgamation (scripts/amalgamate.py)" VERBATIM)
+# the C++ compile includes the very same file
+file(CONFIGURE OUTPUT ${_amal}/cxx/circlecollide.cpp CONTENT "#include \"../circlecollide.c\"\n")
+set_source_files_properties(${_amal}/cxx/circlecollide.cpp PROPERTIES OBJECT_DEPENDS ${_amal}/circlecollide.c)
+
+set(_amal_flags "")
+if(CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
+  set(_amal_flags -Wall -Wextra -Wpedantic -Werror -Wdouble-promotion)
+endif()
+add_library(cc_amalgamation STATIC ${_amal}/circlecollide.c)
+target_include_directories(cc_amalgamation PUBLIC ${_amal})
+target_compile_options(cc_amalgamation PRIVATE ${_amal_flags})
+set_target_properties(cc_amalgamation PROPERTIES C_STANDARD 99 C_STANDARD_REQUIRED ON C_EXTENSIONS OFF)
+if(UNIX)
+  target_link_libraries(cc_amalgamation PUBLIC m)
+endif()
+
+include(CheckLanguage)
+check_language(CXX)
+set(_amal_objects $<TARGET_FILE:cc_amalgamation>)
+if(CMAKE_CXX_COMPILER)
+  enable_language(CXX)
+  add_library(cc_amalgamation_cxx STATIC ${_amal}/cxx/circlecollide.cpp)
+  target_compile_options(cc_amalgamation_cxx PRIVATE ${_amal_flags})
+  set_target_properties(cc_amalgamation_cxx PROPERTIES CXX_STANDARD 17 CXX_STANDARD_REQUIRED ON
+                        CXX_EXTENSIONS OFF)
+  list(APPEND _amal_objects $<TARGET_FILE:cc_amalgamation_cxx>)
+endif()
+
+if(CMAKE_NM)
+  add_test(NAME amalgamation_exports
+           COMMAND ${Python3_EXECUTABLE} ${CMAKE_CURRENT_SOURCE_DIR}/amalgamation/check_exports.py
+                   ${CMAKE_NM} ${PROJECT_SOURCE_DIR}/include/circlecollide.h ${_amal_objects})
+  set_tests_properties(amalgamation_exports PROPERTIES LABELS amalgamation)
+endif()
+
+# cc__public_only(FILE OUT): OUT is TRUE when FILE and everything it includes with quotes (found
+# beside it) reach no header but circlecollide.h and unity.h
+function(cc__public_only file out)
+  set(${out} TRUE PARENT_SCOPE)
+  get_filename_component(_dir ${file} DIRECTORY)
+  file(STRINGS ${file} _incs REGEX "^[ \t]*#[ \t]*include[ \t]*\"")
+  foreach(_inc ${_incs})
+    string(REGEX REPLACE ".*\"([^\"]+)\".*" "\\1" _name "${_inc}")
+    if(_name STREQUAL "circlecollide.h" OR _name STREQUAL "unity.h")
+      continue()
+    endif()
+    if(NOT EXISTS ${_dir}/${_name} OR _name MATCHES "/")
+      set(${out} FALSE PARENT_SCOPE)
+      return()
+    endif()
+    cc__public_only(${_dir}/${_name} _ok)
+    if(NOT _ok)
+      set(${out} FALSE PARENT_SCOPE)
+      return()
+    endif()
+  endforeach()
+endfunction()
+
+# Every test made by cc_add_test (a program of the same name linked with the library and Unity)
+# from tests/test_*.c files that reach only the public header is built again against the amalgamation; tests
+# labelled slow are left to the library's own run.
+get_property(_amal_tests DIRECTORY PROPERTY TESTS)
+set(_amal_count 0)
+foreach(_t ${_amal_tests})
+  if(NOT TARGET ${_t})
+    continue()
+  endif()
+  get_target_property(_libs ${_t} LINK_LIBRARIES)
+  get_target_property(_srcs ${_t} SOURCES)
+  get_target_property(_defs ${_t} COMPILE_DEFINITIONS)
+  get_test_property(${_t} LABELS _labels)
+  get_test_property(${_t} TIMEOUT _timeout)
+  if(NOT "cc_unity" IN_LIST _libs OR "slow" IN_LIST _labels OR "box2d" IN_LIST _labels)
+    continue()
+  endif()
+  set(_ok TRUE)
+  set(_abs "")
+  foreach(_s ${_srcs})
+    get_filename_component(_p ${_s} ABSOLUTE BASE_DIR ${CMAKE_CURRENT_SOURCE_DIR})
+    get_filename_component(_pdir ${_p} DIRECTORY)
+    get_filename_component(_pname ${_p} NAME)
+    cc__public_only(${_p} _pub)
+    # the suite's own test_<file>.c files (the fuzz replay and the runner's self-test take
+    # arguments or test something else)
+    if(NOT _pub OR NOT _pdir STREQUAL CMAKE_CURRENT_SOURCE_DIR OR NOT _pname MATCHES "^test_.*[.]c$")
+      set(_ok FALSE)
+    endif()
+    list(APPEND _abs ${_p})
+  endforeach()
+  if(NOT _ok)
+    continue()
+  endif()
+  add_executable(${_t}_amalgamation ${_abs})
+  target_link_libraries(${_t}_amalgamation PRIVATE cc_amalgamation cc_unity cc_warnings)
+  target_include_directories(${_t}_amalgamation PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
+  if(_defs)
+    target_compile_definitions(${_t}_amalgamation PRIVATE ${_defs})
+  endif()
+  if(UNIX)
+    target_link_libraries(${_t}_amalgamation PRIVATE m)
+  endif()
+  add_test(NAME ${_t}_amalgamation COMMAND ${_t}_amalgamation)
+  set_tests_properties(${_t}_amalgamation PROPERTIES LABELS amalgamation)
+  if(_timeout)
+    set_tests_properties(${_t}_amalgamation PROPERTIES TIMEOUT ${_timeout})
+  endif()
+  math(EXPR _amal_count "${_amal_count} + 1")
+endforeach()
+message(STATUS "circlecollide: ${_amal_count} C tests run again against the amalgamation")
