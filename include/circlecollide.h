@@ -259,6 +259,12 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           one that separates is left to drift apart. An approach slower than 2^-40 times the
  *           two bodies' summed speeds (rounding), or slower than rest_speed * 2^-20 (a resting
  *           contact), is not an impact.
+ * Range     Impacts square lengths and multiply speeds by times: with coordinates, radii or
+ *           speeds beyond about 2^500 (1e150) they may overflow (an Inf impulse, a NaN contact
+ *           point, an overlap left behind), and world times near 1e300 lose positions; keep
+ *           scenes below that (the world fuzzer's D7, D10, D12, D14 in
+ *           tests/fuzz/world_defects/). Queries compare scaled squares and hold at any size; a
+ *           step that would carry a circle past 2^1017 is refused (cc_world_step).
  * Overlaps  Overlaps the caller makes are resolved, never ignored: in EXACT, a circle added or
  *           set on top of others is pushed apart from each at once with cc_separate (shares
  *           inverse to the masses), then given the impact if the pair approaches; a circle
@@ -428,8 +434,11 @@ CC_API int cc_world_remove_circle(cc_world *w, int id);
 /* Advances world time by dt >= 0 in the world's mode. Returns CC_OK; CC_EVENT_LIMIT when an
  * EXACT step processed max_events events and stopped early (the world is consistent, its time is that
  * of the last event processed, and another call continues); CC_ERR_INVALID for dt < 0, NaN or
- * Inf, a world time that would overflow, or a call from the contact callback (nothing
- * changes). dt = 0 resolves pending overlaps and the impacts due now. */
+ * Inf, a world time that would overflow, a step along whose straight path (p + v dt from now)
+ * a circle would pass 2^1017 (about 1.4e306) in either coordinate, where the arithmetic would
+ * overflow, a SWEPT step of a periodic world that would carry a circle half a period (see
+ * "Periodic boxes"), or a call from the contact callback (nothing changes). dt = 0 resolves pending
+ * overlaps and the impacts due now. */
 CC_API int cc_world_step(cc_world *w, double dt);
 
 /* The circle's state at the current world time (pos is where it is now). CC_OK,
@@ -459,7 +468,7 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  * wall should span the period (a channel's sides, reaching a radius beyond both ends) or keep
  * away from its edges. A periodic world always has a grid, also with max_circles <= 32. SWEPT
  * and DISCRETE take the nearest image of each pair: a step must not carry a circle half a
- * period. Casts see every image along their path; queries report each circle once (its image
+ * period (SWEPT refuses such a step: CC_ERR_INVALID, nothing changes). Casts see every image along their path; queries report each circle once (its image
  * nearest the query). */
 
 /* Rolling to rest (1.1): a movable circle with a deceleration a > 0 (def.rolling_decel, or its
@@ -481,7 +490,9 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  *         behind one with more, or a pair leaving each other at an angle after a collision at
  *         restitution < 1 or below rest_speed) is a ball bouncing on a floor: its impacts come
  *         ever closer in time, and cc_world_step returns CC_EVENT_LIMIT (see there) once it
- *         reaches def.max_events. Circles of one deceleration moving apart after an elastic
+ *         reaches def.max_events, the pair left touching within the tolerance (see Tolerance;
+ *         a contact parting slower than rounding resolves is watched until it closes again at
+ *         the least approach that counts). Circles of one deceleration moving apart after an elastic
  *         impact (billiards) do not meet this. */
 
 /* The position of circle id without wrapping: where it would be had the periods not been taken

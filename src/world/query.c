@@ -65,6 +65,22 @@ static void cc__sort_kept(cc__query *q)
     }
 }
 
+/* dx^2 + dy^2 against R^2 (R >= 0): -1, 0 or 1 as it is below, equal or above. Lengths beyond
+ * 2^500 are scaled by 2^-600 first (exact, and the squares no longer overflow: world fuzzer D3,
+ * a circle of radius 1e155 covering the query was missed); below, the plain comparison. */
+static int cc__cmp_dist(double dx, double dy, double R)
+{
+    double d2, r2;
+    if (fabs(dx) > 0x1p500 || fabs(dy) > 0x1p500 || R > 0x1p500) {
+        dx *= 0x1p-600;
+        dy *= 0x1p-600;
+        R *= 0x1p-600;
+    }
+    d2 = dx * dx + dy * dy;
+    r2 = R * R;
+    return d2 < r2 ? -1 : d2 > r2 ? 1 : 0;
+}
+
 static void cc__query_visit(void *ctx, int j, double sx, double sy)
 {
     cc__query *q = (cc__query *)ctx;
@@ -83,13 +99,13 @@ static void cc__query_visit(void *ctx, int j, double sx, double sy)
         /* the centre's distance from the closed box, against the (closed) disc */
         dx = x < q->x0 ? q->x0 - x : x > q->x1 ? x - q->x1 : 0.0;
         dy = y < q->y0 ? q->y0 - y : y > q->y1 ? y - q->y1 : 0.0;
-        if (dx > b->r || dy > b->r || dx * dx + dy * dy > b->r * b->r)
+        if (dx > b->r || dy > b->r || cc__cmp_dist(dx, dy, b->r) > 0)
             return;
     } else {
         double R = q->r + b->r;
         dx = x - q->cx;
         dy = y - q->cy;
-        if (!(dx * dx + dy * dy < R * R))
+        if (!(cc__cmp_dist(dx, dy, R) < 0)) /* (NaN: not within) */
             return;
     }
     cc__keep(q, CC__CARR(w, int32_t, off_idx2id)[j]);

@@ -16,8 +16,10 @@ static inline int64_t cc__logical_cell(const cc_world *w, double x, int k)
     double P = w->period[k], q = floor(x / P), c = floor((x - q * P) * w->inv_cs);
     int64_t n = w->ncell[k];
     if (!(q > -1e15 && q < 1e15))
-        q = q < 0.0 ? -1e15 : 1e15; /* NaN never comes; a box across a million million periods is clamped */
-    c = c < 0.0 ? 0.0 : c >= (double)n ? (double)(n - 1) : c;
+        q = q < 0.0 ? -1e15 : 1e15; /* a box across a million million periods is clamped */
+    /* x = +-Inf (a cast whose path p + d overflows: world fuzzer D15) gives q = +-Inf and c = NaN,
+     * whose conversion was undefined: the end of the clamped range of periods */
+    c = !(c >= 0.0) ? (q < 0.0 ? 0.0 : (double)(n - 1)) : c >= (double)n ? (double)(n - 1) : c;
     return (int64_t)q * n + (int64_t)c;
 }
 

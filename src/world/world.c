@@ -513,10 +513,30 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out)
 
 CC_API double cc_world_time(const cc_world *w) { return cc__world_ok(w) ? w->now : (double)NAN; }
 
+/* Whether every circle's straight path to t_end stays within 2^1017 (about 1.4e306) of the
+ * origin along each axis: the bound a step may carry a circle to (cc_world_step in the header),
+ * beyond which its arithmetic (positions, cell crossings, impacts) would overflow to Inf
+ * (world fuzzer D1). Rolling paths are shorter than straight ones. */
+static int cc__step_in_range(const cc_world *w, double t_end)
+{
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
+    const double lim = 0x1p1017;
+    int j;
+    for (j = 0; j < w->id_end; j++) {
+        double tau = t_end - B[j].t;
+        if ((C[j].flags & CC__ALIVE) &&
+            !(fabs(B[j].px) + fabs(B[j].vx) * tau < lim && fabs(B[j].py) + fabs(B[j].vy) * tau < lim))
+            return 0;
+    }
+    return 1;
+}
+
 CC_API int cc_world_step(cc_world *w, double dt)
 {
     int r;
-    if (!cc__world_ok(w) || w->busy || !(dt >= 0.0) || !isfinite(dt) || !isfinite(w->now + dt))
+    if (!cc__world_ok(w) || w->busy || !(dt >= 0.0) || !isfinite(dt) || !isfinite(w->now + dt) ||
+        !cc__step_in_range(w, w->now + dt))
         return CC_ERR_INVALID;
     w->busy = 1;
     if (w->mode == CC_MODE_EXACT)

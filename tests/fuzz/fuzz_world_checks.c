@@ -10,7 +10,7 @@
  *           bits 5-6 restitution_mix (with byte 4 bit 7: the invalid mix 4)
  *   byte 4  bits 0-6: which of rest_speed, cell_size, rolling_decel are nonzero; bit 7 see above
  *   then    values: restitution, rest_speed, cell_size, rolling_decel, period x, period y (each
- *           a "value", below), max_events (2 bytes: 1 + v % 5000, v = 0xFFFF gives 0: invalid)
+ *           a "value", below), max_events (2 bytes: 1 + v % 1000, v = 0xFFFF gives 0: invalid)
  *   then    calls: one opcode byte each (% OP_COUNT), then that call's arguments.
  * A value is one byte b: b < 12 a hostile double (NaN, +-Inf, 1e300, 1e-300, subnormals, -0,
  * DBL_MAX, ...) chosen by the next byte; b = 12 or 13 the raw 8 bytes that follow; otherwise an
@@ -160,7 +160,8 @@ typedef struct model {
     double time;
     cc_world_stats stats; /* as last read in full */
     /* the call running, for the callbacks */
-    int dead;     /* the input stops here (D7) */
+    int dead;     /* the input stops here (D7; a jam, below) */
+    int capped;   /* steps that ended at CC_EVENT_LIMIT */
     int op, huge; /* huge: a live circle's coordinate or velocity is beyond 1e150 (D7) */
     double call_t0;
     int ncb;
@@ -523,14 +524,14 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
 
 /* Known defects (reported to the lead), which the harness steps around unless built with
  * -DFUZZ_WORLD_STRICT (then it makes these calls and the violation shows):
- * D1  a step whose dt is valid (the time stays finite) but carries a circle past DBL_MAX along an
- *     open axis returns CC_OK and leaves it at +-Inf (a periodic axis: -Inf stays -Inf);
+ * D1  fixed: a step whose dt is valid (the time stays finite) but carried a circle past DBL_MAX
+ *     returned CC_OK and left it at +-Inf; the header now says a step whose straight paths pass
+ *     2^1017 is refused, and do_step checks it (step_range);
  * D2  a periodic world given a coordinate more than 2^31 periods from the origin (a circle added
  *     or set there, or carried there by a step) converts the number of periods to int32_t
  *     (src/world/grid.c cc__wrap_coord): undefined behaviour (UBSan: float-cast-overflow);
- * D3  cc_world_query_circle compares dx * dx + dy * dy < R * R (src/world/query.c): with radii or
- *     distances above about 1e154 both sides overflow to Inf and a circle covering the query disc
- *     is not reported (query_box likewise, the other way, in its corner test);
+ * D3  fixed: the queries compared dx * dx + dy * dy < R * R (src/world/query.c), both sides Inf
+ *     above about 1e154; they now scale by 2^-600 first (test_world_fuzz_defects.c);
  * D4  a periodic world whose period holds more than 2^31 cells (period 20, a circle of radius 1e-9,
  *     or an empty world whose def.cell_size is 1e-300)
  *     converts the cell count to int32_t at the step's rebuild (src/world/overlap.c, w->ncell):
@@ -553,14 +554,16 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  *     minimized): steps are kept below a world time of 1e15;
  * D11 a query in a world of period 6e300 missed a circle (world_defects/d11-*, not minimized):
  *     queries are not checked against brute force with periods beyond 1e9;
- * D9  EXACT with rolling friction: a step that starts without overlaps stops at CC_EVENT_LIMIT (a
- *     jam) with two circles overlapping by 6.6e-4 of their radius sum
- *     (tests/fuzz/world_defects/d9_rolling_jam_overlap.c): the overlap check is left out after a
- *     step that hit the limit in a world where a movable circle rolls;
- * D8  SWEPT, periodic: a step that carries a circle more than a period is accepted (the header
- *     says it must not happen, the library does not refuse it), and query_box then misses that
- *     circle (tests/fuzz/world_defects/d8_swept_periodic_long_step_query.c). The harness keeps
- *     to the precondition: such steps are not made, even with FUZZ_WORLD_STRICT. */
+ * D9, D13 fixed (the rolling sweep lost a pushed pair at a touch; tests/test_world_fuzz_defects.c):
+ *     no longer stepped around;
+ * D14 EXACT: a circle set with radius 1e300 on top of others and a wall: the wall's push-out
+ *     gives an Inf impulse and a NaN contact point (D7's and D12's class: squares of lengths near
+ *     1e300 overflow; world_defects/d14-huge-radius-wall-nan-point): while a circle's coordinates,
+ *     velocity or radius exceed 1e150 (or a call places such a circle) contact points are not
+ *     checked;
+ * D8  fixed: SWEPT, periodic: a step that carried a circle more than a period was accepted and
+ *     query_box then missed that circle; SWEPT now refuses a step carrying a circle half a period
+ *     (swept_too_long checks it); DISCRETE's steps keep to the header's precondition. */
 static int far_on_axis(const model *m, int k, double x)
 {
 #ifdef FUZZ_WORLD_STRICT
@@ -569,7 +572,7 @@ static int far_on_axis(const model *m, int k, double x)
 #else
     if (m->period[k] > 0.0)
         return !(fabs(x) < 1e9 * m->period[k]);
-    return !(fabs(x) < 1e306);
+    return 0; /* open axis: D1 fixed, the library refuses a step past 2^1017 (checked in do_step) */
 #endif
 }
 
@@ -578,7 +581,7 @@ static int step_overflows(const model *m, const snap *s, double dt)
     int i, k;
     /* the header: in SWEPT and DISCRETE "a step must not carry a circle half a period" (a
      * precondition the library does not check: D8 when broken) */
-    if (m->mode != CC_MODE_EXACT)
+    if (m->mode == CC_MODE_DISCRETE) /* (SWEPT refuses such a step: do_step checks it, D8) */
         for (i = 0; i < s->n; i++)
             for (k = 0; k < 2; k++)
                 if (m->period[k] > 0.0 && !(fabs(k ? s->c[i].vel.y : s->c[i].vel.x) * dt < 0.5 * m->period[k]))
@@ -609,18 +612,57 @@ static int step_overflows(const model *m, const snap *s, double dt)
     return 0;
 }
 
-static int place_ub(const model *m, const cc_circle *c)
+static int place_ub(model *m, const cc_circle *c)
 {
 #ifndef FUZZ_WORLD_STRICT
     if (circle_valid(c) && (fabs(c->vel.x) > 1e300 || fabs(c->vel.y) > 1e300))
         return 1; /* D7: velocities near DBL_MAX (1e308, DBL_MAX) overflow the impulses */
+    if (circle_valid(c) && !(fabs(c->pos.x) + fabs(c->pos.y) + fabs(c->vel.x) + fabs(c->vel.y) + c->radius < 1e150))
+        m->huge = 1; /* D14: the call itself may give a contact a NaN point (D7's class) */
 #endif
     return circle_valid(c) && ((m->period[0] > 0.0 && far_on_axis(m, 0, c->pos.x)) ||
                                (m->period[1] > 0.0 && far_on_axis(m, 1, c->pos.y)));
 }
 
+/* The header's range of a step: 1 when some circle's straight path (p + v dt) passes 2^1017
+ * along an axis (the step must be refused), -1 when every one stays clear of it by a margin
+ * for rounding (it must not be), 0 in between. */
+static int step_range(const snap *s, double dt)
+{
+    const double lim = 0x1p1017;
+    int i, far = 0;
+    for (i = 0; i < s->n; i++) {
+        double x = fabs(s->c[i].pos.x) + fabs(s->c[i].vel.x) * dt, y = fabs(s->c[i].pos.y) + fabs(s->c[i].vel.y) * dt;
+        if (!(x < lim * (1.0 + 1e-9) && y < lim * (1.0 + 1e-9)))
+            return 1;
+        if (!(x < lim * (1.0 - 1e-9) && y < lim * (1.0 - 1e-9)))
+            far = 1;
+    }
+    return far ? 0 : -1;
+}
+
+/* SWEPT in a periodic world (D8 fixed: the header refuses a step that carries a circle half a
+ * period): 1 when some circle, none rolling, goes beyond half a period (it must be refused), -1
+ * when every straight path stays short of it by a margin (it must not be), 0 otherwise. */
+static int swept_too_long(const model *m, const snap *s, double dt)
+{
+    int i, k, near = 0, rolls = 0;
+    for (i = 0; i < s->n; i++) {
+        rolls |= s->p[i].rolling_decel > 0.0 && !isinf(s->c[i].mass);
+        for (k = 0; k < 2; k++) {
+            double d = fabs(k ? s->c[i].vel.y : s->c[i].vel.x) * dt, h = 0.5 * m->period[k];
+            if (m->period[k] > 0.0 && !(d < h * (1.0 - 1e-9)))
+                near = 1;
+            if (m->period[k] > 0.0 && !(d < h * (1.0 + 1e-9)) && !rolls)
+                return 1;
+        }
+    }
+    return near || rolls ? (near ? 0 : -1) : -1;
+}
+
 static void do_step(model *m, double dt, const snap *before)
 {
+    int range;
     cc_world_stats s0, s1;
     int kin, rc, clean = 0;
     double e0 = kinetic(before, &kin), e1, t0 = m->time;
@@ -644,7 +686,13 @@ static void do_step(model *m, double dt, const snap *before)
     REQUIRE(m, rc_step_ok(rc), "step: a result outside OK, EVENT_LIMIT, INVALID");
     if (!(dt >= 0.0) || isinf(dt))
         REQUIRE(m, rc == CC_ERR_INVALID, "step: an invalid dt not refused");
-    else if (isfinite(t0 + dt))
+    else if (m->mode == CC_MODE_SWEPT && swept_too_long(m, before, dt) > 0)
+        REQUIRE(m, rc == CC_ERR_INVALID, "step: SWEPT, periodic: a step carrying a circle half a period not refused");
+    else if (m->mode == CC_MODE_SWEPT && swept_too_long(m, before, dt) == 0)
+        ; /* within rounding of half a period, or rolling: either answer */
+    else if ((range = step_range(before, dt)) > 0)
+        REQUIRE(m, rc == CC_ERR_INVALID, "step: a step carrying a circle past 2^1017 not refused");
+    else if (isfinite(t0 + dt) && range < 0)
         REQUIRE(m, rc != CC_ERR_INVALID, "step: a valid dt refused");
     if (rc == CC_ERR_INVALID)
         REQUIRE(m, cc_world_hash(m->w) == h0, "step: a refused step changed the world");
@@ -664,6 +712,18 @@ static void do_step(model *m, double dt, const snap *before)
         REQUIRE(m, m->time == t0 + dt, "step: CC_OK but the time is not t + dt");
     if (rc == CC_EVENT_LIMIT)
         REQUIRE(m, m->time <= t0 + dt, "step: EVENT_LIMIT past t + dt");
+    /* a jam (the header's "Pushing": a circle pushed by one that decelerates less) reaches the
+     * cap at every step, each up to 1000 events of rolling sweeps (clusters of several contacts,
+     * about 1.5 ms an event under coverage and sanitizers): after the first such step of a
+     * rolling world, or the second of any (its checks below made), the input ends, so that the
+     * run stays within libFuzzer's timeout */
+    if (rc == CC_EVENT_LIMIT) {
+        int i, rolls = 0;
+        for (i = 0; i < after.n; i++)
+            rolls |= after.p[i].rolling_decel > 0.0;
+        if (++m->capped >= 2 || rolls)
+            m->dead = 1;
+    }
     e1 = kinetic(&after, &kin);
     {
         int i;
@@ -673,14 +733,6 @@ static void do_step(model *m, double dt, const snap *before)
         for (i = 0; i < after.n; i++)
             g_vmax = fmax(g_vmax, fabs(after.c[i].vel.x) + fabs(after.c[i].vel.y));
     }
-#ifndef FUZZ_WORLD_STRICT
-    if (rc == CC_EVENT_LIMIT) { /* D9: a rolling jam may end overlapping */
-        int i;
-        for (i = 0; i < after.n; i++)
-            if (after.p[i].rolling_decel > 0.0 && !isinf(after.c[i].mass))
-                clean = 0;
-    }
-#endif
     g_loud = 1;
     if (rc != CC_ERR_INVALID && clean && overlaps(m, &after, &what))
         fail(m, what);
@@ -921,8 +973,6 @@ static void do_query(model *m, reader *r, int box, const snap *s)
         }
         if ((m->period[0] > 0.0 && !(m->period[0] < 1e9)) || (m->period[1] > 0.0 && !(m->period[1] < 1e9)))
             sure_in = sure_out = 0; /* D11 */
-        if (!(lim < 1e150 && d < 1e150))
-            sure_in = sure_out = 0; /* D3: squares of distances overflow in src/world/query.c */
 #endif
         in_out = 0;
         listed = 0;
@@ -1043,8 +1093,8 @@ static int one_call(model *m, reader *r, int op)
         int i;
         m->huge = 0;
         for (i = 0; i < before.n; i++)
-            if (!(fabs(before.c[i].pos.x) + fabs(before.c[i].pos.y) + fabs(before.c[i].vel.x) + fabs(before.c[i].vel.y) <
-                  1e150))
+            if (!(fabs(before.c[i].pos.x) + fabs(before.c[i].pos.y) + fabs(before.c[i].vel.x) + fabs(before.c[i].vel.y) +
+                      before.c[i].radius < 1e150)) /* (the radius too: D12, D14) */
                 m->huge = 1;
     }
     if (getenv("FUZZ_WORLD_TRACE")) {
@@ -1279,7 +1329,7 @@ void fuzz_world_one(const uint8_t *data, size_t size)
     {
         unsigned v = byte(&r);
         v = v * 256u + byte(&r);
-        def.max_events = v == 0xFFFFu ? 0u : 1u + v % 5000u;
+        def.max_events = v == 0xFFFFu ? 0u : 1u + v % 1000u;
     }
     def.restitution_mix = nz & 0x80u ? 4 : (int)((flags >> 5) & 3u);
     def.on_contact = flags & 1u ? on_contact : NULL;
