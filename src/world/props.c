@@ -5,7 +5,6 @@
 
 #include <stddef.h>
 
-#define CC__END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
 
 static const size_t cc__circle_props_ends[] = {
     CC__END(cc_circle_props, struct_size), CC__END(cc_circle_props, restitution),

@@ -191,6 +191,8 @@ void cc__roll_stop(cc_world *w, int j);
 void cc__roll_reset(cc_world *w, int j);
 
 /* ---- world.c ---- */
+/* Where a struct's field ends: the handshakes' whole-field bounds (defs, props, stats). */
+#define CC__END(type, field) (offsetof(type, field) + sizeof(((type *)0)->field))
 /* The struct_size handshake: how many of a struct's first n bytes hold whole fields, given the
  * end offsets of its fields in ascending order (a field cut by n is not counted). */
 size_t cc__whole_fields(size_t n, const size_t *ends, int count);
