@@ -179,8 +179,9 @@ CC_API cc_vec2 cc_closest_point_on_segment(cc_vec2 p, const cc_segment *s);
  * decreases: two circles that come to rest exactly touching do not hit (when their motion ends
  * within the rounding of the lengths of a touch, the rest positions decide). When neither circle
  * rolls (both decels 0, or at rest), the answer is cc_sweep's, bit for bit. While both move, the
- * distance is a quartic in t: its roots are isolated through its derivatives and bisected to the
- * last bit, each piece of motion (between stops) evaluated in the relative frame. */
+ * distance is a quartic in t: its roots are isolated through its derivatives and refined on their
+ * brackets (safeguarded Newton) to the point bisection to the last bit gives, each piece of motion
+ * (between stops) evaluated in the relative frame. */
 CC_API int cc_sweep_rolling(const cc_circle *a, double decel_a, const cc_circle *b, double decel_b, double t_max,
                             cc_contact *out);
 
