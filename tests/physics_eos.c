@@ -16,7 +16,7 @@
  *
  * C counts collisions per disk for eos (each impact involves two disks) and impacts for long.
  * docs/PHYSICS.md gives the formulas, the literature values and the figures. */
-#include "circlecollide.h"
+#include "hard_disks.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -25,26 +25,12 @@
 #include <string.h>
 #include <time.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
-#define RADIUS 0.5
-#define KT 1.0
+#define KT HD_KT
 #define MAXBLOCKS 256
 #define MAXETA 64
 
-/* ---- splitmix64, as the ctest uses ---- */
-static uint64_t rng_state;
 static uint64_t g_seed = 0; /* --seed */
-static uint64_t rng_next(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double rng_uniform(void) { return (double)(rng_next() >> 11) * (1.0 / 9007199254740992.0); }
 
 static void die(const char *what)
 {
@@ -53,41 +39,6 @@ static void die(const char *what)
 }
 
 /* ---- the literature ---- */
-
-/* Henderson, Mol. Phys. 30, 971 (1975). */
-static double z_henderson(double eta) { return (1.0 + eta * eta / 8.0) / ((1.0 - eta) * (1.0 - eta)); }
-
-/* Kolafa and Rottner, Mol. Phys. 104, 3435 (2006), eq. (7) with the rho_max = 0.90 coefficients
- * of their section 3.2: Z = sum_i A_i x^i, x = eta / (1 - eta). Fitted to simulations up to the
- * reduced density rho sigma^2 = 0.90 (eta = 0.7069); NaN beyond (the x^57 term takes over). */
-static double z_kolafa_rottner(double eta)
-{
-    static const struct {
-        int p;
-        double a;
-    } t[] = {{0, 1.0},
-             {1, 2.0},
-             {2, 1.12801775},
-             {3, 0.00181895291},
-             {4, -0.0526134737},
-             {5, 0.0504960168},
-             {6, -0.0325537792},
-             {7, 0.0134578632},
-             {8, 0.00140888182},
-             {9, -0.00834273601},
-             {10, 0.00694127367},
-             {11, -0.00262254723},
-             {12, 0.000355746352},
-             {22, -5.24672938e-9},
-             {57, 5.88054639e-23}};
-    double x = eta / (1.0 - eta), z = 0.0;
-    size_t i;
-    if (eta > 0.90 * M_PI / 4.0 + 1e-12)
-        return NAN;
-    for (i = 0; i < sizeof t / sizeof t[0]; i++)
-        z += t[i].a * pow(x, t[i].p);
-    return z;
-}
 
 /* Engel et al., PRE 87, 042134 (2013): liquid-hexatic coexistence at beta P sigma^2 = 9.185 for
  * 0.700 <= eta <= 0.716; in the thermodynamic limit Z is that pressure over rho sigma^2 there. */
@@ -100,9 +51,9 @@ static double z_engel_coexistence(double eta)
 
 /* ---- the world ---- */
 typedef struct sim {
-    unsigned char *raw;
-    cc_world *w;
-    cc_circle *c;
+    hd_box b;     /* the world (hard_disks.h) */
+    cc_world *w;  /* b.w */
+    cc_circle *c; /* its circles, as last read */
     int n;
     double eta, box;
 } sim;
@@ -110,9 +61,7 @@ typedef struct sim {
 static cc_world_stats stats_of(const cc_world *w)
 {
     cc_world_stats st;
-    memset(&st, 0, sizeof st);
-    st.struct_size = sizeof st;
-    if (cc_world_get_stats(w, &st) != CC_OK)
+    if (hd_stats(w, &st) != CC_OK)
         die("cc_world_get_stats");
     return st;
 }
@@ -123,68 +72,23 @@ static void step(sim *s, double dt)
         die("cc_world_step failed");
 }
 
-/* N disks on the first N sites of a square lattice (side ceil(sqrt N)) in a periodic square of
- * side L, N pi r^2 = eta L^2; equal speeds in random directions, zero momentum, K = N kT. */
+/* hard_disks.h's box of n disks, its circles kept in s->c. */
 static void sim_make(sim *s, int n, double eta)
 {
-    cc_world_def d;
-    size_t bytes;
-    int st = -1, i, side = (int)ceil(sqrt((double)n));
-    double mx = 0.0, my = 0.0, ke = 0.0, f, a;
+    const char *failed;
     memset(s, 0, sizeof *s);
-    s->n = n;
-    s->eta = eta;
-    s->box = sqrt(n * M_PI * RADIUS * RADIUS / eta);
     s->c = (cc_circle *)malloc((size_t)n * sizeof *s->c);
     if (s->c == NULL)
         die("out of memory");
-    cc_world_def_init(&d);
-    d.mode = CC_MODE_EXACT;
-    d.max_circles = n;
-    d.restitution = 1.0;
-    d.period.x = s->box;
-    d.period.y = s->box;
-    bytes = cc_world_size(&d);
-    s->raw = (unsigned char *)malloc(bytes + 16);
-    if (bytes == 0 || s->raw == NULL)
-        die("world size");
-    s->w = cc_world_init(s->raw + ((16u - ((size_t)s->raw & 15u)) & 15u), bytes, &d, &st);
-    if (s->w == NULL || st != CC_OK)
-        die("cc_world_init");
-    a = s->box / side;
-    if (!(a > 2.0 * RADIUS))
-        die("the square lattice overlaps at this eta");
-    for (i = 0; i < n; i++) {
-        double th = 2.0 * M_PI * rng_uniform();
-        s->c[i].pos.x = (i % side + 0.5) * a;
-        s->c[i].pos.y = (i / side + 0.5) * a;
-        s->c[i].vel.x = cos(th);
-        s->c[i].vel.y = sin(th);
-        s->c[i].radius = RADIUS;
-        s->c[i].mass = 1.0;
-        mx += s->c[i].vel.x;
-        my += s->c[i].vel.y;
-    }
-    mx /= n;
-    my /= n;
-    for (i = 0; i < n; i++) {
-        s->c[i].vel.x -= mx;
-        s->c[i].vel.y -= my;
-        ke += 0.5 * (s->c[i].vel.x * s->c[i].vel.x + s->c[i].vel.y * s->c[i].vel.y);
-    }
-    f = sqrt(n * KT / ke);
-    for (i = 0; i < n; i++) {
-        s->c[i].vel.x *= f;
-        s->c[i].vel.y *= f;
-        if (cc_world_add_circle(s->w, &s->c[i]) != i)
-            die("cc_world_add_circle");
-    }
+    if ((failed = hd_box_make(&s->b, n, eta, s->c)) != NULL)
+        die(failed);
+    s->w = s->b.w, s->n = n, s->eta = eta, s->box = s->b.box;
     step(s, 0.0);
 }
 
 static void sim_free(sim *s)
 {
-    free(s->raw);
+    hd_box_free(&s->b);
     free(s->c);
     memset(s, 0, sizeof *s);
 }
@@ -200,7 +104,7 @@ static void read_circles(sim *s)
  * crystal or a hexatic box, O(1/sqrt N) in a liquid. O(N^2): fine at the sizes used here. */
 static double psi6_global(sim *s)
 {
-    double re = 0.0, im = 0.0, rc2 = (1.4 * 2.0 * RADIUS) * (1.4 * 2.0 * RADIUS), L = s->box;
+    double re = 0.0, im = 0.0, rc2 = (1.4 * 2.0 * HD_RADIUS) * (1.4 * 2.0 * HD_RADIUS), L = s->box;
     int j, k;
     read_circles(s);
     for (j = 0; j < s->n; j++) {
@@ -283,10 +187,10 @@ static void run_eos(int n, const double *etas, int neta, double equil, int nb, d
         double rate, t0, tblock, zh1, zh2, wsum = 0.0, tsum = 0.0, z, err, err2, zkr, psi = 0.0, cpu0 = (double)clock();
         cc_world_stats a, c;
         sim s;
-        rng_state = g_seed * 0x9E3779B97F4A7C15ull + 1000003u * (uint64_t)(1 + e) + (uint64_t)(eta * 1e4) + 77u * (uint64_t)n;
+        hd_rng_state = g_seed * 0x9E3779B97F4A7C15ull + 1000003u * (uint64_t)(1 + e) + (uint64_t)(eta * 1e4) + 77u * (uint64_t)n;
         sim_make(&s, n, eta);
         /* equilibration; the second half also measures the collision rate that sizes the blocks */
-        rate = 4.0 * (z_henderson(eta) - 1.0) * sqrt(KT / M_PI); /* Enskog with Henderson: a guess */
+        rate = hd_enskog_rate(hd_z_henderson(eta), 2.0 * HD_RADIUS); /* Enskog with Henderson: a guess */
         run_impacts(&s, 0.5 * equil * n / 2.0, rate);
         a = stats_of(s.w);
         t0 = cc_world_time(s.w);
@@ -312,7 +216,7 @@ static void run_eos(int n, const double *etas, int neta, double equil, int nb, d
         z = 1.0 + wsum / (2.0 * tsum * n * KT);
         err = sd_of(zb, nb) / sqrt((double)nb);
         err2 = nb >= 4 ? sd_of(z2, nb / 2) / sqrt((double)(nb / 2)) : NAN;
-        zkr = z_kolafa_rottner(eta);
+        zkr = hd_z_kolafa_rottner(eta);
         {   /* Z over the first and the second half of the blocks: a drift shows unfinished equilibration */
             double w1 = 0.0, t1 = 0.0, w2 = 0.0, t2 = 0.0;
             for (b = 0; b < nb; b++) {
@@ -329,7 +233,7 @@ static void run_eos(int n, const double *etas, int neta, double equil, int nb, d
         }
         c = stats_of(s.w);
         printf("%d\t%.4f\t%.5f\t%.5f\t%.5f\t%.5f\t%.5f\t%.5f\t%+.3f\t%+.1f\t%.3f\t%.3f\t%llu\t%.1f\t%.5f\t%.5f\n", n, eta, z, err,
-               err2, zkr, z_henderson(eta), z_engel_coexistence(eta), 100.0 * (z / zkr - 1.0),
+               err2, zkr, hd_z_henderson(eta), z_engel_coexistence(eta), 100.0 * (z / zkr - 1.0),
                (z - zkr) / fmax(err, err2 == err2 ? err2 : 0.0), psi / nb, sd_of(ps, nb),
                (unsigned long long)c.collisions, ((double)clock() - cpu0) / CLOCKS_PER_SEC, zh1, zh2);
         fflush(stdout);
@@ -349,8 +253,8 @@ static void normal_rounding(double *mean, double *sd)
     double s1 = 0.0, s2 = 0.0;
     int i, m = 4000000;
     for (i = 0; i < m; i++) {
-        double th = 2.0 * M_PI * rng_uniform(), r = 1.0 + 1e-9 * (rng_uniform() - 0.5);
-        double x = 1000.0 * rng_uniform(), y = 1000.0 * rng_uniform();
+        double th = 2.0 * M_PI * hd_uniform(), r = 1.0 + 1e-9 * (hd_uniform() - 0.5);
+        double x = 1000.0 * hd_uniform(), y = 1000.0 * hd_uniform();
         double dx = (x + r * cos(th)) - x, dy = (y + r * sin(th)) - y; /* differences of positions */
         double len = sqrt(dx * dx + dy * dy), nx = dx / len, ny = dy / len;
         double del = nx * nx + ny * ny - 1.0;
@@ -366,11 +270,11 @@ static void run_long(int n, double eta, double total, double every)
     sim s;
     double ke0, px0, py0, pa0, cx0, cy0, rate, cpu0 = (double)clock(), dmean, dsd;
     uint64_t c0;
-    rng_state = g_seed * 0x9E3779B97F4A7C15ull + 4242u + (uint64_t)n;
+    hd_rng_state = g_seed * 0x9E3779B97F4A7C15ull + 4242u + (uint64_t)n;
     sim_make(&s, n, eta);
     totals(&s, &ke0, &px0, &py0, &pa0, &cx0, &cy0);
     c0 = stats_of(s.w).collisions;
-    rate = 4.0 * (z_henderson(eta) - 1.0) * sqrt(KT / M_PI);
+    rate = hd_enskog_rate(hd_z_henderson(eta), 2.0 * HD_RADIUS);
     printf("# N %d, eta %.3f, L %.4f; from the lattice, no separate equilibration\n", n, eta, s.box);
     printf("# impacts\tworld_time\tdE/E\t|dP|/sum|p|\tdCM/L\tmax_overlap\tcpu_s\n");
     fflush(stdout);
@@ -406,9 +310,9 @@ static void run_vacf(int n, double eta, int lags, int origins)
     double *ring, *acc, rate, dt, t0, c0 = 0.0, integral = 0.0;
     int k, j, i, filled = 0;
     cc_world_stats a, c;
-    rng_state = g_seed * 0x9E3779B97F4A7C15ull + 999u + (uint64_t)n;
+    hd_rng_state = g_seed * 0x9E3779B97F4A7C15ull + 999u + (uint64_t)n;
     sim_make(&s, n, eta);
-    rate = 4.0 * (z_henderson(eta) - 1.0) * sqrt(KT / M_PI);
+    rate = hd_enskog_rate(hd_z_henderson(eta), 2.0 * HD_RADIUS);
     run_impacts(&s, 100.0 * n, rate);
     a = stats_of(s.w);
     t0 = cc_world_time(s.w);
@@ -443,7 +347,7 @@ static void run_vacf(int n, double eta, int lags, int origins)
     c0 = acc[0];
     printf("# N %d, eta %.3f: collision rate per disk %.5f (Enskog with Kolafa-Rottner's Z: %.5f), dt = %.5f = "
            "1/8 mean free time, %d origins\n",
-           n, eta, rate, 4.0 * (z_kolafa_rottner(eta) - 1.0) * sqrt(KT / M_PI), dt, origins);
+           n, eta, rate, hd_enskog_rate(hd_z_kolafa_rottner(eta), 2.0 * HD_RADIUS), dt, origins);
     printf("# t_Gamma\tC(t)/C(0)\texp(-Gamma t)\tD(t)/D_E\n");
     for (j = 0; j <= lags; j++) {
         if (j > 0)

@@ -19,7 +19,7 @@
  * with the ideal gas Z = 1: must fail). */
 #include "unity.h"
 
-#include "circlecollide.h"
+#include "hard_disks.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -27,15 +27,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
 #define NDISK 400
 #define SIDE 20 /* SIDE * SIDE = NDISK lattice sites */
 #define MAXBLOCKS 64
-#define RADIUS 0.5
-#define KT 1.0
+#define KT HD_KT
 
 static int g_blocks = 10;
 static double g_per_block = 300.0; /* collisions per disk in each block */
@@ -47,36 +42,14 @@ static int g_ideal = 0;
 void setUp(void) {}
 void tearDown(void) {}
 
-/* ---- a small deterministic generator (splitmix64) ---- */
-static uint64_t rng_state;
-static uint64_t rng_next(void)
-{
-    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-}
-static double rng_uniform(void) { return (double)(rng_next() >> 11) * (1.0 / 9007199254740992.0); }
-
-/* ---- a world in malloc'ed, 16-byte aligned memory ---- */
-typedef struct sim {
-    unsigned char *raw;
-    cc_world *w;
-    double eta, box, sigma;
-} sim;
-
-static void sim_free(sim *s)
-{
-    free(s->raw);
-    memset(s, 0, sizeof *s);
-}
+/* ---- the world: hard_disks.h's box of NDISK disks ---- */
+typedef hd_box sim;
+#define SIGMA (2.0 * HD_RADIUS)
 
 static cc_world_stats stats_of(const cc_world *w)
 {
     cc_world_stats st;
-    memset(&st, 0, sizeof st);
-    st.struct_size = sizeof st;
-    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_stats(w, &st));
+    TEST_ASSERT_EQUAL_INT(CC_OK, hd_stats(w, &st));
     return st;
 }
 
@@ -109,59 +82,12 @@ static void centre_of_mass(const cc_world *w, double *x, double *y)
     *y /= NDISK;
 }
 
-/* N disks on a square lattice in a periodic box of side L with N pi r^2 = eta L^2; all speeds
- * equal in random directions (a start far from Maxwell-Boltzmann), the mean velocity taken
- * off and the velocities scaled so that the kinetic energy is exactly N kT. */
+/* NDISK disks on the SIDE x SIDE lattice of hard_disks.h (equal speeds, zero momentum, K = N kT). */
 static void sim_make(sim *s, double eta)
 {
     static cc_circle c[NDISK];
-    cc_world_def d;
-    size_t bytes;
-    int st = -1, i;
-    double mx = 0.0, my = 0.0, ke = 0.0, f, a;
-    memset(s, 0, sizeof *s);
-    s->eta = eta;
-    s->sigma = 2.0 * RADIUS;
-    s->box = sqrt(NDISK * M_PI * RADIUS * RADIUS / eta);
-    cc_world_def_init(&d);
-    d.mode = CC_MODE_EXACT;
-    d.max_circles = NDISK;
-    d.restitution = 1.0;
-    d.period.x = s->box;
-    d.period.y = s->box;
-    bytes = cc_world_size(&d);
-    TEST_ASSERT_TRUE(bytes > 0);
-    s->raw = (unsigned char *)malloc(bytes + 16);
-    TEST_ASSERT_NOT_NULL(s->raw);
-    s->w = cc_world_init(s->raw + ((16u - ((size_t)s->raw & 15u)) & 15u), bytes, &d, &st);
-    TEST_ASSERT_EQUAL_INT(CC_OK, st);
-    TEST_ASSERT_NOT_NULL(s->w);
-    a = s->box / SIDE;
-    TEST_ASSERT_TRUE(a > s->sigma); /* the lattice does not overlap */
-    for (i = 0; i < NDISK; i++) {
-        double th = 2.0 * M_PI * rng_uniform();
-        c[i].pos.x = (i % SIDE + 0.5) * a;
-        c[i].pos.y = (i / SIDE + 0.5) * a;
-        c[i].vel.x = cos(th);
-        c[i].vel.y = sin(th);
-        c[i].radius = RADIUS;
-        c[i].mass = 1.0;
-        mx += c[i].vel.x;
-        my += c[i].vel.y;
-    }
-    mx /= NDISK;
-    my /= NDISK;
-    for (i = 0; i < NDISK; i++) {
-        c[i].vel.x -= mx;
-        c[i].vel.y -= my;
-        ke += 0.5 * (c[i].vel.x * c[i].vel.x + c[i].vel.y * c[i].vel.y);
-    }
-    f = sqrt(NDISK * KT / ke);
-    for (i = 0; i < NDISK; i++) {
-        c[i].vel.x *= f;
-        c[i].vel.y *= f;
-        TEST_ASSERT_EQUAL_INT(i, cc_world_add_circle(s->w, &c[i]));
-    }
+    TEST_ASSERT_EQUAL_INT(NDISK, SIDE * SIDE);
+    TEST_ASSERT_NULL(hd_box_make(s, NDISK, eta, c));
 }
 
 /* ---- Maxwell-Boltzmann checks ---- */
@@ -223,26 +149,6 @@ typedef struct result {
     double de, dp, dcm;
 } result;
 
-static double henderson(double eta) { return (1.0 + eta * eta / 8.0) / ((1.0 - eta) * (1.0 - eta)); }
-
-/* Kolafa and Rottner, Mol. Phys. 104, 3435 (2006), eq. (7) with their rho_max = 0.90
- * coefficients: Z = sum_i A_i x^i, x = eta / (1 - eta); a fit to finite-size-corrected
- * simulations and the known virial coefficients, valid to eta = 0.7069 (docs/PHYSICS.md). */
-static double kolafa_rottner(double eta)
-{
-    static const double a[] = {1.0, 2.0, 1.12801775, 0.00181895291, -0.0526134737, 0.0504960168, -0.0325537792,
-                               0.0134578632, 0.00140888182, -0.00834273601, 0.00694127367, -0.00262254723,
-                               0.000355746352};
-    double x = eta / (1.0 - eta), z = 0.0;
-    int i;
-    for (i = 12; i >= 0; i--)
-        z = z * x + a[i];
-    return z - 5.24672938e-9 * pow(x, 22) + 5.88054639e-23 * pow(x, 57);
-}
-
-/* Enskog's collision rate per disk in 2D from Z: 4 (Z - 1) / sigma * sqrt(kT / (pi m)). */
-static double enskog_rate(double z, double sigma) { return 4.0 * (z - 1.0) / sigma * sqrt(KT / M_PI); }
-
 static void run_eta(double eta, result *r)
 {
     static double comp[2 * NDISK * (MAXBLOCKS + 1)], speed[NDISK * (MAXBLOCKS + 1)];
@@ -255,9 +161,9 @@ static void run_eta(double eta, result *r)
     double ke0, px0, py0, pa0, ke1, px1, py1, pa1, cx0, cy0, cx1, cy1, sd, gamma_h, t_block, t0;
     double wsum = 0.0, tsum = 0.0, csum = 0.0;
 
-    rng_state = g_seed * 1000003u + (uint64_t)(eta * 1000.0);
+    hd_rng_state = g_seed * 1000003u + (uint64_t)(eta * 1000.0);
     sim_make(&s, eta);
-    gamma_h = enskog_rate(henderson(eta), s.sigma); /* the expected rate, to size the blocks */
+    gamma_h = hd_enskog_rate(hd_z_henderson(eta), SIGMA); /* the expected rate, to size the blocks */
 
     /* the start: all speeds equal; must fail the Maxwell-Boltzmann checks */
     snapshot(s.w, comp, &ncomp, speed, &nspeed);
@@ -287,7 +193,7 @@ static void run_eta(double eta, result *r)
         dc = (double)(sb.collisions - sa.collisions);
         zz = 1.0 + dw / (2.0 * dt * NDISK * KT); /* P A = N kT + virial / (2 t) */
         zb[b] = zz;
-        rb[b] = (2.0 * dc / (NDISK * dt)) / enskog_rate(zz, s.sigma);
+        rb[b] = (2.0 * dc / (NDISK * dt)) / hd_enskog_rate(zz, SIGMA);
         wb[b] = dw;
         tb[b] = dt;
         wsum += dw;
@@ -309,9 +215,9 @@ static void run_eta(double eta, result *r)
         (void)mean_sd(z2, nb / 2, &sd);
         r->z_err = fmax(r->z_err, sd / sqrt((double)(nb / 2)));
     }
-    r->z_ref = g_ideal ? 1.0 : kolafa_rottner(eta);
-    r->z_h = henderson(eta);
-    r->ratio = (2.0 * csum / (NDISK * tsum)) / enskog_rate(r->z, s.sigma);
+    r->z_ref = g_ideal ? 1.0 : hd_z_kolafa_rottner(eta);
+    r->z_h = hd_z_henderson(eta);
+    r->ratio = (2.0 * csum / (NDISK * tsum)) / hd_enskog_rate(r->z, SIGMA);
     (void)mean_sd(rb, nb, &sd);
     r->ratio_err = sd / sqrt((double)nb);
     r->ks = ks_gauss(comp, ncomp, KT);
@@ -331,7 +237,7 @@ static void run_eta(double eta, result *r)
            r->ks, r->ks_crit, r->ks0, r->vmean, r->vmean_err, sqrt(M_PI * KT / 2.0), r->vmean0, r->de,
            r->dp, r->dcm, s1.max_overlap);
     fflush(stdout);
-    sim_free(&s);
+    hd_box_free(&s);
 }
 
 static void check(const result *r)
