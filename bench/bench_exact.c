@@ -61,16 +61,7 @@ typedef struct world_box {
     size_t bytes;
 } world_box;
 
-static void step(cc_world *w, double dt)
-{
-    int r = cc_world_step(w, dt);
-    while (r == CC_EVENT_LIMIT)
-        r = cc_world_step(w, 0.0);
-    if (r != CC_OK) {
-        fprintf(stderr, "bench_exact: cc_world_step: %s\n", cc_result_string(r));
-        exit(1);
-    }
-}
+static void step(cc_world *w, double dt) { bench_step(w, dt, "bench_exact"); }
 
 static cc_world_stats stats_of(const cc_world *w)
 {
@@ -85,10 +76,11 @@ static cc_world_stats stats_of(const cc_world *w)
  * velocities uniform in [-0.5, 0.5) per component (bench_world's disks scene, any n). */
 static void disks_make(world_box *b, int n, double phi, uint64_t seed)
 {
-    int side_n = (int)ceil(sqrt((double)n)), i;
-    double side = sqrt(n * 3.141592653589793 * 0.25 / phi);
-    uint64_t s = seed;
+    bench_scene sc;
+    double side;
+    int i;
     cc_world_def def;
+    bench_scene_disks(&sc, n, phi, seed, &side);
     cc_world_def_init(&def);
     def.max_circles = n;
     def.period.x = def.period.y = side;
@@ -100,25 +92,12 @@ static void disks_make(world_box *b, int n, double phi, uint64_t seed)
         fprintf(stderr, "bench_exact: init failed\n");
         exit(1);
     }
-    for (i = 0; i < n; i++) {
-        cc_circle c;
-        double u[2];
-        int q;
-        for (q = 0; q < 2; q++) {
-            s ^= s << 13, s ^= s >> 7, s ^= s << 17;
-            u[q] = (double)(s >> 11) / 9007199254740992.0 - 0.5;
-        }
-        c.pos.x = (i % side_n + 0.5) * side / side_n;
-        c.pos.y = (i / side_n + 0.5) * side / side_n;
-        c.vel.x = u[0];
-        c.vel.y = u[1];
-        c.radius = 0.5;
-        c.mass = 1.0;
-        if (cc_world_add_circle(b->w, &c) != i) {
+    for (i = 0; i < n; i++)
+        if (cc_world_add_circle(b->w, &sc.c[i]) != i) {
             fprintf(stderr, "bench_exact: add_circle failed\n");
             exit(1);
         }
-    }
+    bench_scene_free(&sc);
 }
 
 /* The walled gas of bench_world's headline (bench_scene_gas, restitution 1). */

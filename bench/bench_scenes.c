@@ -158,3 +158,43 @@ double bench_energy(const cc_circle *c, int n)
             e += 0.5 * c[i].mass * (c[i].vel.x * c[i].vel.x + c[i].vel.y * c[i].vel.y);
     return e;
 }
+
+void bench_scene_disks(bench_scene *s, int n, double phi, uint64_t seed, double *side)
+{
+    int side_n = (int)ceil(sqrt((double)n)), i;
+    double l = sqrt(n * 3.141592653589793 * 0.25 / phi);
+    uint64_t x = seed;
+    memset(s, 0, sizeof *s);
+    snprintf(s->name, sizeof s->name, "disks %d phi %.2f", n, phi);
+    s->n = n;
+    s->c = (cc_circle *)bench_alloc(sizeof *s->c * (size_t)n);
+    for (i = 0; i < n; i++) {
+        double u[2];
+        int q;
+        for (q = 0; q < 2; q++) {
+            x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+            u[q] = (double)(x >> 11) / 9007199254740992.0 - 0.5;
+        }
+        s->c[i].pos.x = (i % side_n + 0.5) * l / side_n;
+        s->c[i].pos.y = (i / side_n + 0.5) * l / side_n;
+        s->c[i].vel.x = u[0];
+        s->c[i].vel.y = u[1];
+        s->c[i].radius = 0.5;
+        s->c[i].mass = 1.0;
+    }
+    s->x0 = s->y0 = 0.0;
+    s->x1 = s->y1 = l;
+    s->r_typ = 0.5;
+    *side = l;
+}
+
+void bench_step(cc_world *w, double dt, const char *who)
+{
+    int r = cc_world_step(w, dt);
+    while (r == CC_EVENT_LIMIT)
+        r = cc_world_step(w, 0.0);
+    if (r != CC_OK) {
+        fprintf(stderr, "%s: cc_world_step: %s\n", who, cc_result_string(r));
+        exit(1);
+    }
+}

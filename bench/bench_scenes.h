@@ -5,6 +5,8 @@
 
 #include "circlecollide.h"
 
+#include <stdint.h>
+
 #define BENCH_MAX_WALLS 8
 
 typedef struct bench_scene {
@@ -28,6 +30,15 @@ void bench_scene_pool(bench_scene *s);
  * mallets on a 2 m x 1 m table. */
 void bench_scene_hockey(bench_scene *s);
 void bench_scene_free(bench_scene *s);
+
+/* n hard disks of diameter 1 on a square lattice in a periodic square box at area fraction phi,
+ * velocities uniform in [-0.5, 0.5) per component (xorshift64 from seed), no walls. The box's
+ * side, the world's period along x and y, goes to *side. */
+void bench_scene_disks(bench_scene *s, int n, double phi, uint64_t seed, double *side);
+
+/* cc_world_step through its event caps (each CC_EVENT_LIMIT continued at once); a failure ends
+ * the program with `who` in the message. */
+void bench_step(cc_world *w, double dt, const char *who);
 
 /* Kinetic energy of the movable circles. */
 double bench_energy(const cc_circle *c, int n);

@@ -57,16 +57,7 @@ static void world_make(world_box *b, const bench_scene *s, int mode, int extra_c
 
 static void world_free(world_box *b) { free(b->mem); }
 
-static void step(cc_world *w, double dt)
-{
-    int r = cc_world_step(w, dt);
-    while (r == CC_EVENT_LIMIT)
-        r = cc_world_step(w, 0.0);
-    if (r != CC_OK) {
-        fprintf(stderr, "bench_world: cc_world_step: %s\n", cc_result_string(r));
-        exit(1);
-    }
-}
+static void step(cc_world *w, double dt) { bench_step(w, dt, "bench_world"); }
 
 static uint64_t collisions(const cc_world *w)
 {
@@ -487,11 +478,12 @@ static int cmd_disks(const opts *o)
     uint64_t coll[3] = {0, 0, 0};
     for (k = 0; k < reps; k++)
         for (e = 0; e < 3; e++) {
-            int v = (e + k) % 3, side_n = (int)ceil(sqrt((double)n));
-            double side = sqrt(n * 3.141592653589793 * 0.25 / etas[v]), t0, c0;
-            uint64_t s = 99 + (uint64_t)k;
+            int v = (e + k) % 3;
+            double side, t0, c0;
+            bench_scene sc;
             cc_world_def def;
             world_box b;
+            bench_scene_disks(&sc, n, etas[v], 99 + (uint64_t)k, &side);
             cc_world_def_init(&def);
             def.max_circles = n;
             def.period.x = def.period.y = side;
@@ -502,22 +494,9 @@ static int cmd_disks(const opts *o)
                 fprintf(stderr, "bench_world disks: init failed\n");
                 return 1;
             }
-            for (i = 0; i < n; i++) {
-                cc_circle c;
-                double u[2];
-                int q;
-                for (q = 0; q < 2; q++) {
-                    s ^= s << 13, s ^= s >> 7, s ^= s << 17;
-                    u[q] = (double)(s >> 11) / 9007199254740992.0 - 0.5;
-                }
-                c.pos.x = (i % side_n + 0.5) * side / side_n;
-                c.pos.y = (i / side_n + 0.5) * side / side_n;
-                c.vel.x = u[0];
-                c.vel.y = u[1];
-                c.radius = 0.5;
-                c.mass = 1.0;
-                cc_world_add_circle(b.w, &c);
-            }
+            for (i = 0; i < n; i++)
+                cc_world_add_circle(b.w, &sc.c[i]);
+            bench_scene_free(&sc);
             step(b.w, 5.0); /* away from the lattice */
             c0 = (double)collisions(b.w);
             t0 = bench_now();
