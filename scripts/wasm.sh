@@ -43,9 +43,10 @@ for opt in "${opts[@]}"; do
   "$cc" "${flags[@]}" -"$opt" -c "$out/dist/circlecollide.c" -o "$out/cc-$opt.o"
   "$cc" "${flags[@]}" -"$opt" -c "$root/demo/wasm/libc.c" -o "$out/libc-$opt.o"
   "$cc" "${flags[@]}" -"$opt" -c "$root/demo/web/glue.c" -o "$out/glue-$opt.o"
-  # the page's module: the library's exports and the glue's (visibility default)
+  "$cc" "${flags[@]}" -"$opt" -c "$root/demo/web/calls.c" -o "$out/calls-$opt.o"
+  # the page's module: the library's exports and the glue's and calls' (visibility default)
   "$ld" "${ldflags[@]}" "${library[@]}" --export-dynamic "$out/cc-$opt.o" "$out/libc-$opt.o" \
-    "$out/glue-$opt.o" -o "$out/page-$opt.wasm"
+    "$out/glue-$opt.o" "$out/calls-$opt.o" -o "$out/page-$opt.wasm"
   [ $sizes_too = 1 ] || continue
   "$ld" "${ldflags[@]}" "${pair[@]}" "$out/cc-$opt.o" "$out/libc-$opt.o" -o "$out/pair-$opt.wasm"
   "$ld" "${ldflags[@]}" "${library[@]}" "$out/cc-$opt.o" "$out/libc-$opt.o" -o "$out/library-$opt.wasm"
@@ -53,7 +54,7 @@ for opt in "${opts[@]}"; do
     case $m in
       pair) what="pair functions (14: double and float)";;
       library) what="library (all ${#public[@]} cc_ functions)";;
-      page) what="page module (library + glue.c)";;
+      page) what="page module (library + glue.c, calls.c)";;
     esac
     printf '%-44s %9d %9d\n' "$what, -$opt" "$(stat -c %s "$out/$m-$opt.wasm")" \
       "$(gzip -9 -c "$out/$m-$opt.wasm" | wc -c)" >>"$sizes"

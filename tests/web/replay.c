@@ -13,7 +13,7 @@
  * Each call does what demo/web/glue.c does for the page. A result that differs from the page's
  * is reported and makes the exit status 1; scripts/test.d/70-web.sh compares the printed state
  * with the page's. usage: web_replay JOURNAL */
-#include "circlecollide.h"
+#include "calls.h"
 
 #include <inttypes.h>
 #include <stdint.h>
@@ -36,47 +36,18 @@ static void put(double d)
     printf(" %016" PRIx64, u);
 }
 
-/* the callbacks do nothing, as long as the page's do not change the world (they may not) */
-static void on_contact(const cc_contact_event *e, void *user)
+/* the page's plain-C calls (demo/web/calls.c) are linked in: the replay runs the same code; the
+ * callbacks do nothing, as long as the page's do not change the world (they may not) */
+void web_on_contact(const cc_contact_event *e, void *user)
 {
     (void)e;
     (void)user;
 }
 
-static void on_sensor(const cc_sensor_event *e, void *user)
+void web_on_sensor(const cc_sensor_event *e, void *user)
 {
     (void)e;
     (void)user;
-}
-
-/* what: 0 restitution (e), 1 sensor, 2 category */
-static int circle_props(cc_world *w, int id, int what, double e, uint32_t category)
-{
-    cc_circle_props p;
-    int r;
-    p.struct_size = sizeof p;
-    r = cc_world_get_circle_props(w, id, &p);
-    if (r != CC_OK)
-        return r;
-    if (what == 0)
-        p.restitution = e;
-    else if (what == 1)
-        p.sensor = 1;
-    else
-        p.category = category;
-    return cc_world_set_circle_props(w, id, &p);
-}
-
-static int segment_restitution(cc_world *w, int id, double e)
-{
-    cc_segment_props p;
-    int r;
-    p.struct_size = sizeof p;
-    r = cc_world_get_segment_props(w, id, &p);
-    if (r != CC_OK)
-        return r;
-    p.restitution = e;
-    return cc_world_set_segment_props(w, id, &p);
 }
 
 #define MAX_TOKENS 16
@@ -85,7 +56,7 @@ int main(int argc, char **argv)
 {
     static char line[4096];
     char *tok[MAX_TOKENS];
-    cc_world_def def;
+    int max_circles = 0;
     cc_world *w = NULL;
     void *memory = NULL;
     FILE *f;
@@ -101,7 +72,6 @@ int main(int argc, char **argv)
         perror(argv[1]);
         return 2;
     }
-    cc_world_def_init(&def);
     while (fgets(line, sizeof line, f) != NULL) {
         int r = 0, expected = 0, has_result = 0;
         const char *op;
@@ -121,25 +91,16 @@ int main(int argc, char **argv)
         }
         op = tok[0];
         if (strcmp(op, "def") == 0 && n == 9) {
-            def.max_circles = atoi(tok[1]);
-            def.max_segments = atoi(tok[2]);
-            def.mode = atoi(tok[3]);
-            def.restitution = bits(tok[4]);
-            def.rest_speed = bits(tok[5]);
-            def.rolling_decel = bits(tok[6]);
-            def.restitution_mix = atoi(tok[7]);
-            def.on_contact = atoi(tok[8]) ? on_contact : NULL;
-            def.on_sensor = atoi(tok[8]) ? on_sensor : NULL;
+            max_circles = atoi(tok[1]);
+            web_def(max_circles, atoi(tok[2]), atoi(tok[3]), bits(tok[4]), bits(tok[5]), bits(tok[6]), atoi(tok[7]),
+                    atoi(tok[8]));
             continue;
         } else if (strcmp(op, "init") == 0 && n == 1) {
-            size_t bytes = cc_world_size(&def);
+            size_t bytes = web_world_size();
             free(memory);
             memory = bytes > 0 ? malloc(bytes + 15) : NULL; /* the world wants 16-byte alignment */
-            w = memory != NULL ? cc_world_init((void *)(((uintptr_t)memory + 15u) & ~(uintptr_t)15u), bytes,
-                                               &def, &r)
-                               : NULL;
-            if (w == NULL && r == 0)
-                r = CC_ERR_MEMORY;
+            w = memory != NULL ? web_world_init((void *)(((uintptr_t)memory + 15u) & ~(uintptr_t)15u), bytes) : NULL;
+            r = memory != NULL ? web_status() : CC_ERR_MEMORY;
         } else if (w == NULL) {
             fprintf(stderr, "%s:%ld: %s before a world was made\n", argv[1], lineno, op);
             return 2;
@@ -161,13 +122,13 @@ int main(int argc, char **argv)
             s.b.y = bits(tok[4]);
             r = cc_world_add_segment(w, &s);
         } else if (strcmp(op, "circle_restitution") == 0 && n == 3) {
-            r = circle_props(w, atoi(tok[1]), 0, bits(tok[2]), 0);
+            r = web_circle_restitution(w, atoi(tok[1]), bits(tok[2]));
         } else if (strcmp(op, "circle_sensor") == 0 && n == 2) {
-            r = circle_props(w, atoi(tok[1]), 1, 0.0, 0);
+            r = web_circle_sensor(w, atoi(tok[1]));
         } else if (strcmp(op, "circle_category") == 0 && n == 3) {
-            r = circle_props(w, atoi(tok[1]), 2, 0.0, (uint32_t)strtoul(tok[2], NULL, 10));
+            r = web_circle_category(w, atoi(tok[1]), (uint32_t)strtoul(tok[2], NULL, 10));
         } else if (strcmp(op, "segment_restitution") == 0 && n == 3) {
-            r = segment_restitution(w, atoi(tok[1]), bits(tok[2]));
+            r = web_segment_restitution(w, atoi(tok[1]), bits(tok[2]));
         } else if (strcmp(op, "step") == 0 && n == 2) {
             r = cc_world_step(w, bits(tok[1]));
         } else {
@@ -188,7 +149,7 @@ int main(int argc, char **argv)
         return 2;
     }
     {
-        int cap = def.max_circles, count;
+        int cap = max_circles, count;
         int *ids = (int *)malloc(sizeof(int) * (size_t)(cap > 0 ? cap : 1));
         cc_circle *out = (cc_circle *)malloc(sizeof(cc_circle) * (size_t)(cap > 0 ? cap : 1));
         if (ids == NULL || out == NULL)
