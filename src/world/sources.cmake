@@ -11,7 +11,7 @@ list(APPEND CC_WORLD_SOURCES
   world/near.c      # what touches a circle now (for simultaneous-impact resolvers)
   world/cluster.c   # the simultaneous-impact model (generalized reflections)
   world/simultaneous.c # EXACT: gathers the cluster of an impact and resolves it with the model
-  world/step.c      # cc_world_step: validation, the range a step may reach, dispatch; stats
+  world/step.c      # cc_world_step: validation, what a step may reach (one pass), dispatch; stats
   world/exact.c     # EXACT stepping
   world/swept.c     # SWEPT stepping
   world/discrete.c  # DISCRETE stepping

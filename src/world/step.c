@@ -8,21 +8,34 @@
 
 static int cc__world_ok(const cc_world *w) { return w != NULL && w->magic == CC__WORLD_MAGIC; }
 
-/* Whether every circle's straight path to t_end stays within 2^1017 (about 1.4e306) of the
- * origin along each axis: the bound a step may carry a circle to (cc_world_step in the header),
- * beyond which its arithmetic (positions, cell crossings, impacts) would overflow to Inf
- * (world fuzzer D1). Rolling paths are shorter than straight ones. */
-static int cc__step_in_range(const cc_world *w, double t_end)
+/* Whether a step to now + dt may be made, checked in one pass over the circles before anything
+ * changes (cc_world_step in the header): every straight path stays within 2^1017 (about 1.4e306)
+ * of the origin along each axis, beyond which positions, cell crossings and impacts would
+ * overflow to Inf (world fuzzer D1; rolling paths are shorter than straight ones); and in SWEPT,
+ * a periodic world's circles travel less than half a period along a periodic axis (along their
+ * rolling paths when they roll), since each pair is swept through its images nearest now only
+ * (D8: a query then missed the circle). */
+static int cc__step_allowed(const cc_world *w, double dt)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
     const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
-    const double lim = 0x1p1017;
+    const double lim = 0x1p1017, t_end = w->now + dt;
+    const int half = w->mode == CC_MODE_SWEPT && (w->features & CC__F_PERIODIC);
     int j;
     for (j = 0; j < w->id_end; j++) {
-        double tau = t_end - B[j].t;
-        /* the hot line first: the cold one (is it alive?) only for a path out of range */
-        if (!(fabs(B[j].px) + fabs(B[j].vx) * tau < lim && fabs(B[j].py) + fabs(B[j].vy) * tau < lim) &&
-            (C[j].flags & CC__ALIVE))
+        double tau = t_end - B[j].t, vx = B[j].vx, vy = B[j].vy, g = dt, gd, x, y, k;
+        int in = fabs(B[j].px) + fabs(vx) * tau < lim && fabs(B[j].py) + fabs(vy) * tau < lim;
+        /* the hot line first: the cold one (is it alive?) only when there is more to look at */
+        if ((in && !half) || !(C[j].flags & CC__ALIVE))
+            continue;
+        if (!in)
+            return 0;
+        if (w->features & CC__F_ROLL) { /* its velocity now, and its slowing path from now */
+            cc__roll_state(w, j, w->now, &x, &y, &vx, &vy, &k);
+            cc__roll_motion(k, dt, &g, &gd);
+        }
+        if ((w->period[0] > 0.0 && !(fabs(vx) * g < 0.5 * w->period[0])) ||
+            (w->period[1] > 0.0 && !(fabs(vy) * g < 0.5 * w->period[1])))
             return 0;
     }
     return 1;
@@ -32,7 +45,7 @@ CC_API int cc_world_step(cc_world *w, double dt)
 {
     int r;
     if (!cc__world_ok(w) || w->busy || !(dt >= 0.0) || !isfinite(dt) || !isfinite(w->now + dt) ||
-        !cc__step_in_range(w, w->now + dt))
+        !cc__step_allowed(w, dt))
         return CC_ERR_INVALID;
     w->busy = 1;
     if (w->mode == CC_MODE_EXACT)

@@ -306,39 +306,12 @@ static void cc__find_impacts(cc_world *w, double dt)
             cc__heap_update(w, i, ev[i].t);
 }
 
-/* Whether a step of a periodic world carries some circle half a period or more along a periodic
- * axis (along its rolling path when it rolls): the header refuses it, since each pair is swept
- * through its images nearest now only (world fuzzer D8: a query then missed the circle). */
-static int cc__step_too_long(const cc_world *w, double dt)
-{
-    const cc__body *B = CC__CARR(w, cc__body, off_body);
-    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
-    int j;
-    if (!(w->features & CC__F_PERIODIC))
-        return 0;
-    for (j = 0; j < w->id_end; j++) {
-        double vx = B[j].vx, vy = B[j].vy, g = dt, gd, x, y, k;
-        if (!(C[j].flags & CC__ALIVE))
-            continue;
-        if (w->features & CC__F_ROLL) { /* its velocity now, and its slowing path from now */
-            cc__roll_state(w, j, w->now, &x, &y, &vx, &vy, &k);
-            cc__roll_motion(k, dt, &g, &gd);
-        }
-        if ((w->period[0] > 0.0 && !(fabs(vx) * g < 0.5 * w->period[0])) ||
-            (w->period[1] > 0.0 && !(fabs(vy) * g < 0.5 * w->period[1])))
-            return 1;
-    }
-    return 0;
-}
-
 int cc__step_swept(cc_world *w, double dt)
 {
     cc__body *B = CC__ARR(w, cc__body, off_body);
     const cc__event *EV = CC__CARR(w, cc__event, off_ev);
     double t_end = w->now + dt;
     int i;
-    if (cc__step_too_long(w, dt))
-        return CC_ERR_INVALID; /* (before anything changes) */
     cc__rebuild(w);
     cc__find_impacts(w, dt);
     while ((i = cc__heap_top(w)) >= 0) {
