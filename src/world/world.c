@@ -244,6 +244,7 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
     w->period[1] = d.period.y;
     if (d.period.x > 0.0 || d.period.y > 0.0)
         w->features |= CC__F_PERIODIC;
+    w->reach = 2.0 * (d.period.x > d.period.y ? d.period.x : d.period.y); /* see cc__reach_floor */
     {
         uint32_t bits = 0;
         while (bits < 31 && (1u << (bits + 1)) <= w->slot_mask + 1u)
@@ -319,6 +320,7 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
     b->t = w->now;
     b->r = c->radius;
     b->count++;
+    cc__reach_note(w, b);
     k->m = c->mass;
     k->flags = CC__ALIVE;
     if (w->features & CC__F_ROLL)

@@ -153,6 +153,14 @@ struct cc_world {
     double cal_w, cal_inv_w, cal_base; /* block width, its inverse, where block 0 begins */
     double cal_t0;                   /* world time and events when the rate was last measured */
     uint64_t cal_e0;
+    /* What a step may reach (step.c): bounds over the live circles that let cc_world_step
+     * accept most steps without a look at each circle. reach >= |p| + |v| (now - t) along either
+     * axis of every live circle's lazy state (the straight path the range rule reads, at now),
+     * speed >= |vx| and |vy| of every live circle; both only ever loose, never short (+Inf when
+     * something was NaN), and made exact again by the pass over the circles (reach_ticks: the
+     * steps and events since that pass). Kept by cc__reach_note and by cc_world_step. */
+    double reach, speed;
+    uint64_t reach_ticks;
 };
 
 #define CC__WORLD_MAGIC 0x63637731u /* "ccw1" */
@@ -235,6 +243,23 @@ static inline void cc__body_pos(const cc_world *w, int j, double t, double *x, d
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[j];
     *x = cc__bx(w, b, t);
     *y = cc__by(w, b, t);
+}
+/* max(bound, x) for the bounds of what a step may reach: a NaN x makes the bound +Inf, never NaN
+ * (a NaN bound would compare false and be lost by the next max). */
+static inline double cc__reach_max(double bound, double x)
+{
+    return x <= bound ? bound : x == x ? x : HUGE_VAL;
+}
+/* Body b has a new position or velocity (set by the caller, pushed apart, given an impulse): the
+ * world's bounds on what a step may reach (w->reach, w->speed) are widened to hold it. Its
+ * straight path from its own time b->t to now counts when that lies in the past. */
+static inline void cc__reach_note(cc_world *w, const cc__body *b)
+{
+    double tau = w->now > b->t ? w->now - b->t : 0.0;
+    w->reach = cc__reach_max(w->reach, fabs(b->px) + fabs(b->vx) * tau);
+    w->reach = cc__reach_max(w->reach, fabs(b->py) + fabs(b->vy) * tau);
+    w->speed = cc__reach_max(w->speed, fabs(b->vx));
+    w->speed = cc__reach_max(w->speed, fabs(b->vy));
 }
 /* ---- periodic axes (issue 15) ---- */
 /* d (a difference of coordinates along axis k) as its nearest image: |d| <= period / 2. One
