@@ -121,8 +121,8 @@ CC_API int cc_world_step(cc_world *w, double dt)
         r = cc__step_discrete(w, dt);
     w->busy = 0;
     /* every circle's |p| + |v| (now - t) grew by at most V times the time that passed (V as the
-     * step's impulses left it), rounded up */
-    if (w->now > now)
+     * step's impulses left it), rounded up (a world at rest keeps its bound as it is) */
+    if (w->now > now && w->speed > 0.0)
         w->reach = (w->reach + w->speed * (w->now - now)) * (1.0 + 0x1p-50);
     w->reach_ticks += 1 + (w->stats.events - events);
     return r;
