@@ -94,6 +94,30 @@ static void test_a_speed_doubled_by_an_impact_is_seen_by_the_next_step(void)
     }
 }
 
+/* Steps add up: a circle at speed 2^1000 makes three steps of 2^15 (2^1015 each, to 0.75 *
+ * 2^1017), each within the quick test's limit on its own; the fourth would reach 2^1017 itself:
+ * refused, nothing changed. Every mode. */
+static void test_steps_add_up_to_the_limit(void)
+{
+    int mode, i;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++) {
+        tw_mem m;
+        cc_world *w = make(&m, mode, 0.0, 4);
+        cc_circle c = tw_circle(0.0, 0.0, 0x1p1000, 0.0, 1.0, 1.0), o;
+        uint64_t h;
+        TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
+        for (i = 0; i < 3; i++)
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0x1p15));
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
+        TEST_ASSERT_EQUAL_DOUBLE(0x1.8p1016, o.pos.x);
+        h = cc_world_hash(w);
+        TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_step(w, 0x1p15));
+        TEST_ASSERT_TRUE(h == cc_world_hash(w));
+        TEST_ASSERT_EQUAL_DOUBLE(0x1.8p16, cc_world_time(w));
+        tw_free(&m);
+    }
+}
+
 /* The same for SWEPT's half period (periods 100 x 100): the kinematic circle at speed 10 strikes
  * the light one, which leaves at 20; a step of 3 carries the kinematic circle 30 (below 50) but
  * the struck one 60: refused; a step of 2 (40) is made. */
@@ -251,6 +275,7 @@ int main(void)
 {
     UNITY_BEGIN();
     RUN_TEST(test_a_speed_doubled_by_an_impact_is_seen_by_the_next_step);
+    RUN_TEST(test_steps_add_up_to_the_limit);
     RUN_TEST(test_a_speed_doubled_by_an_impact_is_seen_by_the_half_period_rule);
     RUN_TEST(test_loose_bounds_leave_the_decision_to_the_pass);
     RUN_TEST(test_a_world_at_rest_steps_without_the_pass);
