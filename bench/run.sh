@@ -34,7 +34,7 @@ fi
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$b2d" \
   -DCC_BUILD_TESTS=OFF -DCC_BUILD_DEMO=OFF >>"$log" 2>&1
-targets=(bench_pair bench_pair_rolling bench_world bench_queries bench_exact)
+targets=(bench_pair bench_pair_rolling bench_world bench_idle bench_queries bench_exact)
 grep -q "Box2D found" "$log" && targets+=(bench_box2d_world)
 cmake --build "$build" -j"$jobs" --target "${targets[@]}" >>"$log" 2>&1 || {
   tail -30 "$log" >&2
@@ -47,6 +47,7 @@ if [ $quick = 1 ]; then
   "$bin/bench_pair" --pairs 200000 --rounds 9 --no-reference | tee -a "$log" | grep '^figure '
   "$bin/bench_world" headline --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_world" features --quick | tee -a "$log" | grep '^figure '
+  "$bin/bench_idle" --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" casts --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" walls --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_exact" --quick | tee -a "$log" | grep '^figure '
@@ -88,6 +89,8 @@ echo "== world: scaling" | tee -a "$log"
 "$bin/bench_world" scaling --csv "$out/scaling.csv" | tee "$out/scaling.txt"
 echo "== world: features a scene does not use" | tee -a "$log"
 "$bin/bench_world" features --csv "$out/features.csv" | tee "$out/features.txt"
+echo "== world: a step with nothing to do (N circles at rest, or moving slowly, against an empty world)" | tee -a "$log"
+"$bin/bench_idle" --csv "$out/idle.csv" | tee "$out/idle.txt"
 echo "== queries and walls at scale" | tee -a "$log"
 "$bin/bench_queries" casts | tee "$out/casts.txt"
 "$bin/bench_queries" walls | tee "$out/walls.txt"

@@ -15,6 +15,10 @@ if(CC_BUILD_BENCH AND EXISTS ${PROJECT_SOURCE_DIR}/bench/CMakeLists.txt)
     add_test(NAME bench_world_tiny COMMAND bench_world peer 300 0.3 0.5 0.016666666666666666)
     set_tests_properties(bench_world_tiny PROPERTIES LABELS bench TIMEOUT 120
       PASS_REGULAR_EXPRESSION "tunnelling=0 escaped=0 ")
+    # a step with nothing to do (10,000 circles at rest, or moving slowly, against an empty world)
+    add_test(NAME bench_idle_tiny COMMAND bench_idle --quick)
+    set_tests_properties(bench_idle_tiny PROPERTIES LABELS bench TIMEOUT 120
+      PASS_REGULAR_EXPRESSION "figure idle_rest_n10000_over_empty ")
     # the walls benchmark at its quick size: it runs, and the two variants have the same collisions
     add_test(NAME bench_queries_walls_tiny COMMAND bench_queries walls --quick)
     set_tests_properties(bench_queries_walls_tiny PROPERTIES LABELS bench TIMEOUT 120
