@@ -30,8 +30,8 @@ static cc_world *make(tw_mem *m, int mode, double period, int max_circles)
     return w;
 }
 
-/* What the pass reads, for every live circle: max over the axes of |p| + |v| (now - t) and of
- * |v|; the bounds must be at least these (to the rounding step.c allows for: 2^-40 here). */
+/* What the pass reads, for every live circle: max over the axes of |p| + |v| (now - t), and
+ * |vx| + |vy|; the bounds must be at least these (to the rounding step.c allows for: 2^-40 here). */
 static void check_bounds(const cc_world *w)
 {
     const cc__body *B = CC__CARR(w, cc__body, off_body);
@@ -45,7 +45,7 @@ static void check_bounds(const cc_world *w)
         x = fabs(B[j].px) + fabs(B[j].vx) * ago;
         y = fabs(B[j].py) + fabs(B[j].vy) * ago;
         TEST_ASSERT_TRUE(x <= w->reach * (1.0 + 0x1p-40) && y <= w->reach * (1.0 + 0x1p-40));
-        TEST_ASSERT_TRUE(fabs(B[j].vx) <= w->speed && fabs(B[j].vy) <= w->speed);
+        TEST_ASSERT_TRUE(fabs(B[j].vx) + fabs(B[j].vy) <= w->speed);
     }
 }
 
@@ -163,13 +163,13 @@ static void test_loose_bounds_leave_the_decision_to_the_pass(void)
             fid = cc_world_add_circle(w, &far);
             TEST_ASSERT_EQUAL_INT(2, fid);
             TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_remove_circle(w, fid));
-            TEST_ASSERT_TRUE(w->speed == 0x1p600 && w->reach >= 0x1.9p1016); /* loose */
+            TEST_ASSERT_TRUE(w->speed >= 0x1p600 && w->reach >= 0x1.9p1016); /* loose */
             /* 2^600 * 2^500 is Inf (in periodic SWEPT, 2^600 * 1 passes half a period) */
             dt = mode == CC_MODE_SWEPT && per ? 1.0 : 0x1p500;
             TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, dt));
             TEST_ASSERT_EQUAL_DOUBLE(dt, cc_world_time(w));
             /* measured by the pass (the bounds alone never shrink): tight */
-            TEST_ASSERT_TRUE(w->speed == 1e-300 && w->reach < 100.0);
+            TEST_ASSERT_TRUE(w->speed == 1.5e-300 && w->reach < 100.0);
             TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
             TEST_ASSERT_TRUE(isfinite(o.pos.x) && isfinite(o.pos.y));
             ticks = w->reach_ticks;

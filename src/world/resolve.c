@@ -127,11 +127,10 @@ static int cc__resolve_one(cc_world *w, const cc__touch *tc, cc_contact *held, d
     return 1;
 }
 
-void cc__world_mark(cc_world *w, int id)
+void cc__world_touch(cc_world *w, int id)
 {
     cc__cold *k = &CC__ARR(w, cc__cold, off_cold)[id];
     CC__ARR(w, cc__body, off_body)[id].count++;
-    cc__reach_note(w, &CC__CARR(w, cc__body, off_body)[id]); /* its new state within the step's bounds */
     if (w->features & CC__F_ROLL)
         cc__roll_reset(w, id); /* a new velocity, the same deceleration */
     if (k->flags & CC__TOUCHED)

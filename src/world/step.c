@@ -21,15 +21,17 @@ static int cc__world_ok(const cc_world *w) { return w != NULL && w->magic == CC_
  * at rest, or whose circles move a little in each step, pays nothing per circle for the check.
  * Why the quick test accepts only steps that the pass accepts:
  *  - R bounds, for every live circle and either axis, the pass's |p| + |v| (now - t) (lazy state
- *    (p, v) at its own time t) and V its |v|; so the pass's |p| + |v| (t_end - t) is at most
- *    R + V (t_end - now) in exact arithmetic. Everything that writes a position or a velocity
- *    notes it (cc__reach_note: cc__put for add and set, cc__world_mark for every impulse and
- *    push-apart, which all mark the body they change); carrying a body along its path
- *    (cc__advance_body, rolling, its stop) leaves |p| + |v| (now - t) as it was, or smaller
- *    (rolling only slows); a wrap to the other side of a period leaves a coordinate within the
- *    period (R starts at twice the largest period: cc__reach_floor); removal leaves R and V
- *    loose. After a step R grows by V (now' - now) with V as the step left it (V only grows
- *    inside a step, and a circle changed at time t in it is noted at t). Sorting permutes
+ *    (p, v) at its own time t) and V its |vx| + |vy| (>= its speed along either axis); so the
+ *    pass's |p| + |v| (t_end - t) is at most R + V (t_end - now) in exact arithmetic. What writes
+ *    a position or a velocity notes it: cc__put (add, set) notes both; every impulse and
+ *    push-apart marks the body it changed (cc__world_mark), which notes its velocity, and its
+ *    position when a push-apart moved it (CC__MOVED); an impulse changes only the velocity of a
+ *    body carried to now, where its old path put it (R held that already). Carrying a body along
+ *    its path (cc__advance_body, rolling, its stop) leaves |p| + |v| (now - t) as it was, or
+ *    smaller (rolling only slows); a wrap to the other side of a period leaves a coordinate
+ *    within the period (R starts at twice the largest period: cc__reach_floor); removal leaves
+ *    R and V loose. After a step R grows by V (now' - now) with V as the step left it (V only
+ *    grows inside a step, and a circle changed at time t in it is noted at t). Sorting permutes
  *    storage: nothing to do.
  *  - Rounding: each quantity is a max of the pass's own numbers, or a sum rounded up (the factor
  *    1 + 2^-50 after each step); carrying a body to another time rounds its position by a few
@@ -83,8 +85,7 @@ static int cc__step_allowed(cc_world *w, double dt)
         ago = w->now > B[j].t ? w->now - B[j].t : 0.0; /* as cc__reach_note */
         reach = cc__reach_max(reach, fabs(B[j].px) + fabs(vx) * ago);
         reach = cc__reach_max(reach, fabs(B[j].py) + fabs(vy) * ago);
-        speed = cc__reach_max(speed, fabs(vx));
-        speed = cc__reach_max(speed, fabs(vy));
+        speed = cc__reach_max(speed, fabs(vx) + fabs(vy));
         if (!half)
             continue;
         if (w->features & CC__F_ROLL) { /* its velocity now, and its slowing path from now */

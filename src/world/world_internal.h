@@ -156,7 +156,8 @@ struct cc_world {
     /* What a step may reach (step.c): bounds over the live circles that let cc_world_step
      * accept most steps without a look at each circle. reach >= |p| + |v| (now - t) along either
      * axis of every live circle's lazy state (the straight path the range rule reads, at now),
-     * speed >= |vx| and |vy| of every live circle; both only ever loose, never short (+Inf when
+     * speed >= |vx| + |vy| of every live circle (one add and one compare per impulse, and >= the
+     * speed along either axis, which is what the rules read); both only ever loose, never short (+Inf when
      * something was NaN), and made exact again by the pass over the circles (reach_ticks: the
      * steps and events since that pass). Kept by cc__reach_note and by cc_world_step. */
     double reach, speed;
@@ -255,11 +256,13 @@ static inline double cc__reach_max(double bound, double x)
  * straight path from its own time b->t to now counts when that lies in the past. */
 static inline void cc__reach_note(cc_world *w, const cc__body *b)
 {
-    double tau = w->now > b->t ? w->now - b->t : 0.0;
-    w->reach = cc__reach_max(w->reach, fabs(b->px) + fabs(b->vx) * tau);
-    w->reach = cc__reach_max(w->reach, fabs(b->py) + fabs(b->vy) * tau);
-    w->speed = cc__reach_max(w->speed, fabs(b->vx));
-    w->speed = cc__reach_max(w->speed, fabs(b->vy));
+    double x = fabs(b->px), y = fabs(b->py), vx = fabs(b->vx), vy = fabs(b->vy);
+    if (w->now > b->t) { /* (rarely: a body is noted at its own time, now, nearly always) */
+        x += vx * (w->now - b->t);
+        y += vy * (w->now - b->t);
+    }
+    w->reach = cc__reach_max(cc__reach_max(w->reach, x), y);
+    w->speed = cc__reach_max(w->speed, vx + vy);
 }
 /* ---- periodic axes (issue 15) ---- */
 /* d (a difference of coordinates along axis k) as its nearest image: |d| <= period / 2. One
@@ -400,8 +403,19 @@ static inline int cc__approaching(const cc_world *w, double vn, double speeds)
  * Returns the impulses applied. */
 int cc__world_resolve(cc_world *w, const cc__touch *touch, int n);
 /* Body id's trajectory changed at w->now: bumps its count (others' events with it go stale) and
- * puts it on the touched list once. */
-void cc__world_mark(cc_world *w, int id);
+ * puts it on the touched list once (cc__world_touch), its new state noted in the bounds of what a
+ * step may reach (inline here: the impulse paths pay a few compares). An impulse changes the
+ * velocity of a body carried to now, whose position its path already held (w->speed is enough);
+ * a push-apart moves it (CC__MOVED, set before the mark): then its position counts too. */
+void cc__world_touch(cc_world *w, int id);
+static inline void cc__world_mark(cc_world *w, int id)
+{
+    const cc__body *b = &CC__CARR(w, cc__body, off_body)[id];
+    w->speed = cc__reach_max(w->speed, fabs(b->vx) + fabs(b->vy));
+    if (CC__CARR(w, cc__cold, off_cold)[id].flags & CC__MOVED)
+        cc__reach_note(w, b);
+    cc__world_touch(w, id);
+}
 /* Takes a body off the touched list (-1 when empty). */
 int cc__world_take_touched(cc_world *w);
 /* Pushes apart body a and circle b (b >= 0) or segment seg when they overlap, then resolves the
