@@ -122,3 +122,38 @@ double cc__heap_top_key(const cc_world *w)
 {
     return w->heap_n > 0 ? CC__CARR(w, cc__heap_entry, off_heap)[0].key : HUGE_VAL;
 }
+
+/* The next events are most likely those of the root's children in the queue: their states are
+ * asked for now, and the neighbourhood (the three rows of slots) of the earliest, whose state
+ * was asked for at the previous event already. Below a size where everything stays in the
+ * caches this would cost without paying. */
+#define CC__PREFETCH_MIN_BODIES 32768
+void cc__prefetch_ahead(const cc_world *w)
+{
+#if defined(__GNUC__)
+    const cc__heap_entry *heap = CC__CARR(w, cc__heap_entry, off_heap);
+    const cc__body *B = CC__CARR(w, cc__body, off_body);
+    const cc__event *EV = CC__CARR(w, cc__event, off_ev);
+    const int32_t *slot = CC__CARR(w, int32_t, off_slot);
+    int q, m = 1, end = w->heap_n < 5 ? w->heap_n : 5;
+    if (w->n_circles < CC__PREFETCH_MIN_BODIES || w->heap_n < 2 || !w->use_grid) /* (bodies, not the heap: a
+                                            calendar keeps the heap short; a periodic world's cells at its
+                                            edges are prefetched unwrapped: another slot, harmless) */
+        return;
+    for (q = 1; q < end; q++) {
+        __builtin_prefetch(&B[heap[q].id]);
+        __builtin_prefetch(&EV[heap[q].id]);
+        m = heap[q].key < heap[m].key ? q : m;
+    }
+    {
+        const cc__body *b = &B[heap[m].id];
+        int32_t y;
+        for (y = b->cy - 1; y <= b->cy + 1; y++) {
+            __builtin_prefetch(&slot[cc__grid_slot(w, b->cx - 1, y)]);
+            __builtin_prefetch(&slot[cc__grid_slot(w, b->cx + 1, y)]);
+        }
+    }
+#else
+    (void)w;
+#endif
+}

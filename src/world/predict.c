@@ -3,10 +3,11 @@
  * it leaves its grid cell. Circles are searched without a time limit, so that after a cell
  * crossing the hit already known stays the best among the cells still adjacent and only the
  * newly adjacent row or column of cells is searched (unless the known hit went stale). Walls
- * are searched up to min(hit, crossing) and only when their box is within reach. Bodies at rest
- * predict nothing: whatever moves towards them holds the event. */
+ * are searched up to min(hit, crossing) and only when their box is within reach
+ * (predict_walls.c); the crossing's time: crossing.c. Bodies at rest predict nothing: whatever
+ * moves towards them holds the event. */
 #include "world_internal.h"
-#include "walls.h"
+#include "predict.h"
 
 #include "precision_double.h"
 #include "helpers.inc"
@@ -21,12 +22,6 @@
 #define CC__INLINE_ALWAYS static inline
 #define CC__NOINLINE static
 #endif
-
-typedef struct cc__cand {
-    double t; /* absolute */
-    int kind, partner;
-    uint32_t pcount;
-} cc__cand;
 
 /* The solver's part of cc__try_circle_x, out of line: most pairs never get here. */
 CC__NOINLINE void cc__try_close(const cc_world *w, const cc__body *bi, const cc__body *bj, int j, cc_vec2 dp,
@@ -164,126 +159,6 @@ CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, co
     cc__try_close(w, bi, bj, j, dp, dv, now, best);
 }
 
-/* Walls within reach before min(best, t_cross). */
-static void cc__try_segments(cc_world *w, int i, const cc__body *bi, double t_cross, cc__cand *best)
-{
-    const cc_segment *seg = CC__CARR(w, cc_segment, off_seg);
-    double now = w->now, h = (best->t < t_cross ? best->t : t_cross) - now;
-    double x0 = -HUGE_VAL, x1 = HUGE_VAL, y0 = -HUGE_VAL, y1 = HUGE_VAL;
-    cc_circle c;
-    cc_contact k;
-    cc__wall_walk walk;
-    double roll = (w->features & CC__F_ROLL) ? CC__CARR(w, cc__props, off_props)[i].roll : 0.0;
-    int s;
-    c.pos.x = bi->px;
-    c.pos.y = bi->py;
-    c.vel.x = bi->vx;
-    c.vel.y = bi->vy;
-    c.radius = bi->r;
-    c.mass = 1.0;
-    if (h < HUGE_VAL) { /* the path's box, grown by the radius (and a little, for rounding) */
-        double ex = bi->px + bi->vx * h, ey = bi->py + bi->vy * h, g = bi->r * 1.001;
-        x0 = (ex < bi->px ? ex : bi->px) - g;
-        x1 = (ex < bi->px ? bi->px : ex) + g;
-        y0 = (ey < bi->py ? ey : bi->py) - g;
-        y1 = (ey < bi->py ? bi->py : ey) + g;
-    }
-    cc__walls_begin(w, &walk, x0, y0, x1, y1);
-    while ((s = cc__walls_next(w, &walk)) >= 0) {
-        const cc_segment *q = &seg[s];
-        int r;
-        if ((w->features & (CC__F_FILTER | CC__F_SENSOR)) && !cc__wall_interacts(w, i, s))
-            continue;
-        w->stats.pairs_tested++;
-        if (roll > 0.0) {
-            double g, gd;
-            r = cc__roll_sweep_segment(&c, roll, q, best->t - now, &k);
-            if (r == CC_MISS || r < 0 || !(now + k.t < best->t))
-                continue;
-            cc__roll_motion(roll, k.t, &g, &gd); /* the velocity at contact */
-            if (!cc__approaching(w, gd * cc__dot(c.vel, k.normal), gd * (fabs(c.vel.x) + fabs(c.vel.y))))
-                continue;
-        } else {
-            r = cc_sweep_segment(&c, q, best->t - now, &k);
-            if (r == CC_MISS || r < 0 || !(now + k.t < best->t))
-                continue;
-            if (!cc__approaching(w, cc__dot(c.vel, k.normal), fabs(c.vel.x) + fabs(c.vel.y)))
-                continue;
-        }
-        best->t = now + k.t;
-        best->kind = CC__EV_SEGMENT;
-        best->partner = s;
-    }
-}
-
-/* The upper bound of cell c along axis k: the period's end for the last cell of a periodic axis. */
-static double cc__cell_top(const cc_world *w, int32_t c, int k)
-{
-    return w->ncell[k] > 0 && c == w->ncell[k] - 1 ? w->period[k] : ((double)c + 1.0) * w->cs;
-}
-
-/* When body b (at now, in cell c) leaves its cell, and through which side. Along a periodic axis
- * every cell has both sides (the last cell's upper one is the period's end, beyond which the
- * first cell begins again); along an open axis the outermost cells have none outwards. */
-static double cc__cross_time(const cc_world *w, const cc__body *b, int32_t *dir)
-{
-    double tx = HUGE_VAL, ty = HUGE_VAL;
-    int dx = -1, dy = -1, px = w->ncell[0] > 0, py = w->ncell[1] > 0;
-    if (b->vx > 0.0 && (px || b->cx < CC__CELL_MAX)) {
-        tx = cc__cell_top(w, b->cx, 0) - b->px;
-        tx /= b->vx;
-        dx = 0;
-    } else if (b->vx < 0.0 && (px || b->cx > -CC__CELL_MAX)) {
-        tx = ((double)b->cx * w->cs - b->px) / b->vx;
-        dx = 1;
-    }
-    if (b->vy > 0.0 && (py || b->cy < CC__CELL_MAX)) {
-        ty = cc__cell_top(w, b->cy, 1) - b->py;
-        ty /= b->vy;
-        dy = 2;
-    } else if (b->vy < 0.0 && (py || b->cy > -CC__CELL_MAX)) {
-        ty = ((double)b->cy * w->cs - b->py) / b->vy;
-        dy = 3;
-    }
-    if (ty < tx) {
-        tx = ty;
-        dx = dy;
-    }
-    *dir = dx;
-    if (dx < 0)
-        return HUGE_VAL;
-    return w->now + (tx > 0.0 ? tx : 0.0);
-}
-
-/* The same for a rolling body (coefficient k > 0): along its slowing path, and its stop when it
- * comes first (dir CC__DIR_STOP). */
-static double cc__roll_cross_time(const cc_world *w, const cc__body *b, double k, int32_t *dir)
-{
-    double best = 0.5 / k, t; /* the stop */
-    int px = w->ncell[0] > 0, py = w->ncell[1] > 0;
-    *dir = CC__DIR_STOP;
-    if (b->vx > 0.0 && (px || b->cx < CC__CELL_MAX) && (t = cc__roll_reach(b->px, b->vx, k, cc__cell_top(w, b->cx, 0))) < best)
-        best = t, *dir = 0;
-    else if (b->vx < 0.0 && (px || b->cx > -CC__CELL_MAX) && (t = cc__roll_reach(b->px, b->vx, k, (double)b->cx * w->cs)) < best)
-        best = t, *dir = 1;
-    if (b->vy > 0.0 && (py || b->cy < CC__CELL_MAX) && (t = cc__roll_reach(b->py, b->vy, k, cc__cell_top(w, b->cy, 1))) < best)
-        best = t, *dir = 2;
-    else if (b->vy < 0.0 && (py || b->cy > -CC__CELL_MAX) && (t = cc__roll_reach(b->py, b->vy, k, (double)b->cy * w->cs)) < best)
-        best = t, *dir = 3;
-    return w->now + (best > 0.0 ? best : 0.0);
-}
-
-/* When body b (storage index i, at now) leaves its cell or (rolling) stops. */
-static double cc__next_move(const cc_world *w, int i, const cc__body *b, int32_t *dir)
-{
-    if (w->features & CC__F_ROLL) {
-        double k = CC__CARR(w, cc__props, off_props)[i].roll;
-        if (k > 0.0)
-            return cc__roll_cross_time(w, b, k, dir);
-    }
-    return cc__cross_time(w, b, dir);
-}
-
 /* Whether the nx x ny cells from (x0, y0) all lie within the period along each periodic axis:
  * then each is its own image (shift 0), and the plain walk below visits the same cells in the
  * same order as the wrapped one, without its divisions. */
@@ -383,26 +258,13 @@ static void cc__try_images(const cc_world *w, const cc__body *B, const cc__body 
                                  tests, check, al, 1);
 }
 
-/* A body that has no cells to cross (a large circle) in a periodic world: it looks again once it
- * has travelled half a period along an axis, so that the images it looks at stay the ones it can
- * reach (dir CC__DIR_AGAIN). */
-static double cc__again_time(const cc_world *w, const cc__body *b)
-{
-    double t = HUGE_VAL;
-    if (w->period[0] > 0.0 && b->vx != 0.0)
-        t = 0.5 * w->period[0] / fabs(b->vx);
-    if (w->period[1] > 0.0 && b->vy != 0.0 && 0.5 * w->period[1] / fabs(b->vy) < t)
-        t = 0.5 * w->period[1] / fabs(b->vy);
-    return w->now + t;
-}
-
 /* Stores the prediction and queues the body by its earlier event. */
 static void cc__finish(cc_world *w, int i, cc__cand *best, double t_cross, int32_t dir)
 {
     cc__body *bi = &CC__ARR(w, cc__body, off_body)[i];
     cc__event *ev = &CC__ARR(w, cc__event, off_ev)[i];
     if (w->n_segments > 0 && !isinf(CC__CARR(w, cc__cold, off_cold)[i].m))
-        cc__try_segments(w, i, bi, t_cross, best);
+        cc__predict_walls(w, i, bi, t_cross, best);
     ev->t = best->t;
     ev->kind = best->kind;
     ev->partner = best->partner;
@@ -609,39 +471,4 @@ void cc__predict_neighbours(cc_world *w, int id)
             if (j != id && (B[j].vx != 0.0 || B[j].vy != 0.0))
                 cc__predict(w, j);
     }
-}
-
-/* The next events are most likely those of the root's children in the queue: their states are
- * asked for now, and the neighbourhood (the three rows of slots) of the earliest, whose state
- * was asked for at the previous event already. Below a size where everything stays in the
- * caches this would cost without paying. */
-#define CC__PREFETCH_MIN_BODIES 32768
-void cc__prefetch_ahead(const cc_world *w)
-{
-#if defined(__GNUC__)
-    const cc__heap_entry *heap = CC__CARR(w, cc__heap_entry, off_heap);
-    const cc__body *B = CC__CARR(w, cc__body, off_body);
-    const cc__event *EV = CC__CARR(w, cc__event, off_ev);
-    const int32_t *slot = CC__CARR(w, int32_t, off_slot);
-    int q, m = 1, end = w->heap_n < 5 ? w->heap_n : 5;
-    if (w->n_circles < CC__PREFETCH_MIN_BODIES || w->heap_n < 2 || !w->use_grid) /* (bodies, not the heap: a
-                                            calendar keeps the heap short; a periodic world's cells at its
-                                            edges are prefetched unwrapped: another slot, harmless) */
-        return;
-    for (q = 1; q < end; q++) {
-        __builtin_prefetch(&B[heap[q].id]);
-        __builtin_prefetch(&EV[heap[q].id]);
-        m = heap[q].key < heap[m].key ? q : m;
-    }
-    {
-        const cc__body *b = &B[heap[m].id];
-        int32_t y;
-        for (y = b->cy - 1; y <= b->cy + 1; y++) {
-            __builtin_prefetch(&slot[cc__grid_slot(w, b->cx - 1, y)]);
-            __builtin_prefetch(&slot[cc__grid_slot(w, b->cx + 1, y)]);
-        }
-    }
-#else
-    (void)w;
-#endif
 }

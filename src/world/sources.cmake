@@ -1,10 +1,12 @@
 # The world's sources (included by src/CMakeLists.txt).
 list(APPEND CC_WORLD_SOURCES
   world/world.c     # API, def handshake, memory layout, ids
-  world/events.c    # indexed 4-ary heap of predicted events
+  world/events.c    # indexed 4-ary heap of predicted events; prefetch of the next ones
   world/calendar.c  # EXACT's queue in large worlds: an event calendar in front of the heap
   world/grid.c      # hashed uniform cell list
-  world/predict.c   # EXACT: a body's earliest event
+  world/predict.c   # EXACT: a body's earliest event (its circles; the whole prediction)
+  world/predict_walls.c # EXACT: a body's earliest wall
+  world/crossing.c  # EXACT: when a body leaves its grid cell
   world/resolve.c   # every impulse and push-apart
   world/overlap.c   # overlaps made by the caller; the full rebuild
   world/sort.c      # storage in Morton order of the cells; ids <-> storage indices

@@ -334,6 +334,9 @@ void cc__heap_update(cc_world *w, int id, double key); /* insert or move to its 
 void cc__heap_remove(cc_world *w, int id);
 int cc__heap_top(const cc_world *w); /* -1 when empty */
 double cc__heap_top_key(const cc_world *w); /* +INFINITY when empty */
+/* A large world (EXACT): asks the memory for what the next few events will read, so that it
+ * arrives while the current one is processed. Changes nothing. */
+void cc__prefetch_ahead(const cc_world *w);
 
 /* ---- calendar.c: EXACT's queue, an event calendar in front of the heap (large worlds) ---- */
 /* Buckets of the calendar of a world of this mode and size (0: none, the heap alone). */
@@ -375,9 +378,6 @@ void cc__predict_crossed(cc_world *w, int id, int dir);
 int cc__predict_pair_alone(cc_world *w, int a, int b, double reach_a, double reach_b);
 /* re-predicts every movable body that could meet body id (its neighbourhood) */
 void cc__predict_neighbours(cc_world *w, int id);
-/* A large world (EXACT): asks the memory for what the next few events will read, so that it
- * arrives while the current one is processed. Changes nothing. */
-void cc__prefetch_ahead(const cc_world *w);
 /* True when approach speed vn (> 0: closing) is a collision: faster than the rounding of the
  * bodies' speeds (their sum is `speeds`), and not a resting contact, which approaches at less
  * than rest_speed * 2^-20 (the sequence of ever smaller impulses that pairwise resolution of
