@@ -153,13 +153,9 @@ struct cc_world {
     double cal_w, cal_inv_w, cal_base; /* block width, its inverse, where block 0 begins */
     double cal_t0;                   /* world time and events when the rate was last measured */
     uint64_t cal_e0;
-    /* What a step may reach (step.c): bounds over the live circles that let cc_world_step
-     * accept most steps without a look at each circle. reach >= |p| + |v| (now - t) along either
-     * axis of every live circle's lazy state (the straight path the range rule reads, at now),
-     * speed >= |vx| + |vy| of every live circle (one add and one compare per impulse, and >= the
-     * speed along either axis, which is what the rules read); both only ever loose, never short (+Inf when
-     * something was NaN), and made exact again by the pass over the circles (reach_ticks: the
-     * steps and events since that pass). Kept by cc__reach_note and by cc_world_step. */
+    /* What a step may reach (step.c): reach >= |p| + |v| (now - t) along either axis, speed >=
+     * |vx| + |vy|, over the live circles' lazy states; loose, never short (+Inf after a NaN);
+     * measured again by the pass over the circles, reach_ticks steps and events ago */
     double reach, speed;
     uint64_t reach_ticks;
 };
@@ -245,15 +241,12 @@ static inline void cc__body_pos(const cc_world *w, int j, double t, double *x, d
     *x = cc__bx(w, b, t);
     *y = cc__by(w, b, t);
 }
-/* max(bound, x) for the bounds of what a step may reach: a NaN x makes the bound +Inf, never NaN
- * (a NaN bound would compare false and be lost by the next max). */
+/* max(bound, x) for those bounds: a NaN x makes the bound +Inf (a NaN one would be lost). */
 static inline double cc__reach_max(double bound, double x)
 {
     return x <= bound ? bound : x == x ? x : HUGE_VAL;
 }
-/* Body b has a new position or velocity (set by the caller, pushed apart, given an impulse): the
- * world's bounds on what a step may reach (w->reach, w->speed) are widened to hold it. Its
- * straight path from its own time b->t to now counts when that lies in the past. */
+/* Body b has a new position or velocity (set, pushed apart): w->reach and w->speed hold it. */
 static inline void cc__reach_note(cc_world *w, const cc__body *b)
 {
     double x = fabs(b->px), y = fabs(b->py), vx = fabs(b->vx), vy = fabs(b->vy);
