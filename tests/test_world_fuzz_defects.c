@@ -244,6 +244,56 @@ static void test_a_periodic_cast_past_dbl_max_is_defined(void)
     tw_free(&m);
 }
 
+/* D16: a circle moving slower than 1 given the largest finite deceleration (DBL_MAX, valid)
+ * through set_circle_props ended with velocity (NaN, NaN). Its rolling coefficient
+ * k = decel / (2 |v|) is finite but above DBL_MAX / 2, and the motion's g'(tau) = 1 - 2 k tau
+ * was evaluated as (2 k) tau = Inf * 0 when the body was brought to the present (tau = 0) by
+ * the props call itself (src/rolling_roots.inc cc__roll_motion, now 1 - 2 (k tau), fixed on
+ * 2026-11-26 for cc_rolling_advancef's 2 tau; this is the world's path to it). The fuzz input
+ * (world_defects/d16-*, now in corpus_world/) also made it a sensor and gave it restitution
+ * 1e-308: neither matters. Every speed below 1 (and above) must stop the circle at once, where
+ * it is, and a circle in its way must not be struck. */
+static void test_the_largest_deceleration_stops_a_slow_circle_at_once(void)
+{
+    static const double speeds[5] = {0.76370930252578206, 1e-3, 0.5, 1.5, 1e-200};
+    int k, sensor;
+    for (k = 0; k < 5; k++)
+        for (sensor = 0; sensor < 2; sensor++) {
+            cc_world_def d;
+            tw_mem m;
+            cc_world *w;
+            cc_circle a = {{-6.4315352648058468, -17.174086211408429}, {1.5274186050515643e-10, -speeds[k]}, 0.2,
+                           1.296680497925311};
+            cc_circle b = {{-6.4315352648058468, -19.0}, {0.0, 0.0}, 0.5, 1.0}, o;
+            cc_circle_props p;
+            cc_world_def_init(&d);
+            d.max_circles = 4;
+            d.rolling_decel = 0.49792531120331945;
+            w = tw_make(&m, &d, 0);
+            TEST_ASSERT_NOT_NULL(w);
+            TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &a));
+            TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &b));
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.0)); /* built: the props call predicts again */
+            p.struct_size = sizeof p;
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle_props(w, 0, &p));
+            p.rolling_decel = DBL_MAX;
+            p.restitution = 1.1125369292536007e-308;
+            p.sensor = sensor;
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle_props(w, 0, &p));
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
+            TEST_ASSERT_TRUE(isfinite(o.vel.x) && isfinite(o.vel.y)); /* it was (NaN, NaN) */
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.28215767634854771));
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
+            TEST_ASSERT_EQUAL_DOUBLE(0.0, o.vel.x);
+            TEST_ASSERT_EQUAL_DOUBLE(0.0, o.vel.y);
+            TEST_ASSERT_EQUAL_DOUBLE(a.pos.x, o.pos.x); /* it stops within 1e-308 of where it was */
+            TEST_ASSERT_EQUAL_DOUBLE(a.pos.y, o.pos.y);
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &o));
+            TEST_ASSERT_TRUE(o.vel.x == 0.0 && o.vel.y == 0.0);
+            tw_free(&m);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -253,5 +303,6 @@ int main(void)
     RUN_TEST(test_a_query_finds_a_huge_circle_covering_it);
     RUN_TEST(test_a_swept_periodic_step_of_half_a_period_is_refused);
     RUN_TEST(test_a_periodic_cast_past_dbl_max_is_defined);
+    RUN_TEST(test_the_largest_deceleration_stops_a_slow_circle_at_once);
     return UNITY_END();
 }
