@@ -294,6 +294,77 @@ static void test_the_largest_deceleration_stops_a_slow_circle_at_once(void)
         }
 }
 
+/* D17: a circle of mass 1e308 struck by a kinematic circle (mass +INFINITY) at speed 1. Its
+ * velocity change, (1 + e) v_n along the normal, is finite, but the simultaneous-impact solver
+ * (cluster.c) found it through the impulse, v_n / (1 / m) = 1e308 * 2 = Inf, then
+ * Inf * (1 / m): the circle left with an infinite velocity and the contact point NaN. The pair
+ * path (resolve.c, cc_respond's mass shares) was right but for the reported impulse, which is
+ * +INFINITY (the header's rule for impulses beyond DBL_MAX). Here the heavy circle touches a
+ * light one (mass 1), so that the impact is a cluster of three; and alone (a pair), and the
+ * same scenes with masses 2^-1000 times as large (ordinary arithmetic) give the same
+ * velocities. */
+static int g_bad_points;
+static double g_max_impulse;
+
+static void check_contact(const cc_contact_event *e, void *user)
+{
+    (void)user;
+    if (!(isfinite(e->point.x) && isfinite(e->point.y)) || isnan(e->impulse) || !(e->impulse >= 0.0))
+        g_bad_points++;
+    if (e->impulse > g_max_impulse)
+        g_max_impulse = e->impulse;
+}
+
+static void test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velocities(void)
+{
+    int light, scaled;
+    for (light = 0; light < 2; light++) {
+        cc_circle got[2][3];
+        for (scaled = 0; scaled < 2; scaled++) {
+            cc_world_def d;
+            tw_mem m;
+            cc_world *w;
+            double heavy = scaled ? 1e308 * 0x1p-1000 : 1e308, lm = scaled ? 0x1p-1000 : 1.0;
+            cc_circle k = {{-2.5, 0.0}, {1.0, 0.0}, 0.5, INFINITY};
+            cc_circle h = {{0.0, 0.0}, {0.0, 0.0}, 1.0, heavy};
+            cc_circle l = {{2.0, 0.0}, {0.0, 0.0}, 1.0, lm};
+            int i, n = light ? 3 : 2;
+            cc_world_def_init(&d);
+            d.max_circles = 4;
+            d.on_contact = check_contact;
+            w = tw_make(&m, &d, 0);
+            TEST_ASSERT_NOT_NULL(w);
+            TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &k));
+            TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &h));
+            if (light)
+                TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &l));
+            g_bad_points = 0;
+            g_max_impulse = 0.0;
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.5)); /* the impact at t = 1 */
+            TEST_ASSERT_EQUAL_INT(0, g_bad_points); /* the point was (NaN, NaN) */
+            for (i = 0; i < n; i++) {
+                TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, i, &got[scaled][i]));
+                TEST_ASSERT_TRUE(isfinite(got[scaled][i].vel.x) && isfinite(got[scaled][i].vel.y));
+                TEST_ASSERT_TRUE(isfinite(got[scaled][i].pos.x) && isfinite(got[scaled][i].pos.y));
+            }
+            /* heavy: 2 along x (e = 1 against an infinite mass), the light one 4 once struck */
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12, 2.0, got[scaled][1].vel.x);
+            if (light)
+                TEST_ASSERT_DOUBLE_WITHIN(1e-12, 4.0, got[scaled][2].vel.x);
+            /* the impulse on the heavy one, 2e308, is beyond DBL_MAX: +INFINITY; scaled, finite */
+            if (scaled)
+                TEST_ASSERT_TRUE(isfinite(g_max_impulse) && g_max_impulse > 0.0);
+            else
+                TEST_ASSERT_TRUE(isinf(g_max_impulse));
+            tw_free(&m);
+        }
+        TEST_ASSERT_EQUAL_DOUBLE(got[1][1].vel.x, got[0][1].vel.x); /* the same bits at both scales */
+        TEST_ASSERT_EQUAL_DOUBLE(got[1][1].vel.y, got[0][1].vel.y);
+        if (light)
+            TEST_ASSERT_EQUAL_DOUBLE(got[1][2].vel.x, got[0][2].vel.x);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -304,5 +375,6 @@ int main(void)
     RUN_TEST(test_a_swept_periodic_step_of_half_a_period_is_refused);
     RUN_TEST(test_a_periodic_cast_past_dbl_max_is_defined);
     RUN_TEST(test_the_largest_deceleration_stops_a_slow_circle_at_once);
+    RUN_TEST(test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velocities);
     return UNITY_END();
 }
