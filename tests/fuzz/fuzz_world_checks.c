@@ -293,6 +293,15 @@ static void on_contact(const cc_contact_event *e, void *user)
     ln = hypot(e->normal.x, e->normal.y);
     REQUIRE(m, fabs(ln - 1.0) <= 1e-6, "contact event: normal not a unit vector");
     REQUIRE(m, !isnan(e->impulse) && e->impulse >= 0.0, "contact event: negative or NaN impulse");
+    if (isinf(e->impulse)) { /* the header: +INFINITY only beyond DBL_MAX, so with a mass near it (D17) */
+        int i, heavy = 0;
+        for (i = 0; i < m->maxc; i++)
+            heavy |= m->live[i] && isfinite(m->mass[i]) && m->mass[i] > 1e150;
+#ifndef FUZZ_WORLD_STRICT
+        heavy |= m->huge;
+#endif
+        REQUIRE(m, heavy, "contact event: an infinite impulse without a mass beyond 1e150");
+    }
     if (isnan(e->point.x) || isnan(e->point.y) || getenv("FUZZ_WORLD_TRACE"))
         fprintf(stderr, "fuzz_world: contact a %d b %d segment %d t %.17g point (%.17g, %.17g) normal (%.17g, %.17g) "
                         "impulse %.17g\n", e->a, e->b, e->segment, e->t, e->point.x, e->point.y, e->normal.x,
@@ -561,6 +570,11 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  *     1e300 overflow; world_defects/d14-huge-radius-wall-nan-point): while a circle's coordinates,
  *     velocity or radius exceed 1e150 (or a call places such a circle) contact points are not
  *     checked;
+ * D16 fixed: a circle moving slower than 1 given rolling_decel DBL_MAX got a NaN velocity (2k
+ *     overflowed in the rolling motion's g'); D17 fixed: a circle of mass 1e308 in a cluster
+ *     struck by a kinematic one got an Inf velocity and the contact a NaN point (the cluster
+ *     solver's impulse overflowed); neither was stepped around; contact impulses may be
+ *     +INFINITY (the header's rule) only while some circle's mass exceeds 1e150;
  * D8  fixed: SWEPT, periodic: a step that carried a circle more than a period was accepted and
  *     query_box then missed that circle; SWEPT now refuses a step carrying a circle half a period
  *     (swept_too_long checks it); DISCRETE's steps keep to the header's precondition. */
@@ -908,6 +922,12 @@ static void do_stats(model *m, reader *r)
                        !(b->max_overlap < a->max_overlap),
                 "get_stats: a counter went down");
         REQUIRE(m, b->stale_events <= b->events, "get_stats: more stale events than events");
+#ifndef FUZZ_WORLD_STRICT
+        if (!m->huge) /* (D7's class: Inf impulses at speeds near DBL_MAX) */
+#endif
+            REQUIRE(m, !isnan(b->virial) && !isnan(b->wall_impulse) && !(b->virial < a->virial) &&
+                           !(b->wall_impulse < a->wall_impulse),
+                    "get_stats: virial or wall_impulse NaN or decreasing (sums of impulses >= 0)");
         m->stats = u.s;
     }
 }
