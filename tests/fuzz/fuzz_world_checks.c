@@ -163,6 +163,7 @@ typedef struct model {
     int dead;     /* the input stops here (D7; a jam, below) */
     int capped;   /* steps that ended at CC_EVENT_LIMIT */
     int op, huge; /* huge: a live circle's coordinate or velocity is beyond 1e150 (D7) */
+    double placing; /* the mass of the circle an add or set call places (0 otherwise) */
     double call_t0;
     int ncb;
 } model;
@@ -297,6 +298,7 @@ static void on_contact(const cc_contact_event *e, void *user)
         int i, heavy = 0;
         for (i = 0; i < m->maxc; i++)
             heavy |= m->live[i] && isfinite(m->mass[i]) && m->mass[i] > 1e150;
+        heavy |= isfinite(m->placing) && m->placing > 1e150;
 #ifndef FUZZ_WORLD_STRICT
         heavy |= m->huge;
 #endif
@@ -1139,7 +1141,9 @@ static int one_call(model *m, reader *r, int op)
         if (getenv("FUZZ_WORLD_TRACE"))
             fprintf(stderr, "add (%.17g, %.17g) v (%.17g, %.17g) r %.17g m %.17g\n", c.pos.x, c.pos.y, c.vel.x,
                     c.vel.y, c.radius, c.mass);
+        m->placing = c.mass;
         rc = cc_world_add_circle(m->w, &c);
+        m->placing = 0.0;
         if (!circle_valid(&c))
             REQUIRE(m, rc == CC_ERR_INVALID, "add_circle: an invalid circle not INVALID");
         else if (m->count == m->maxc)
@@ -1186,7 +1190,9 @@ static int one_call(model *m, reader *r, int op)
         }
         if (place_ub(m, &c))
             break; /* D2 */
+        m->placing = c.mass;
         rc = cc_world_set_circle(m->w, id, &c);
+        m->placing = 0.0;
         if (!live_id(m, id))
             REQUIRE(m, rc == CC_ERR_NOT_FOUND || ((!circle_valid(&c) || !fits_period(m, &c)) && rc == CC_ERR_INVALID),
                     "set_circle: a dead id not NOT_FOUND");
