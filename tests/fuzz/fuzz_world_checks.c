@@ -572,6 +572,12 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  *     1e300 overflow; world_defects/d14-huge-radius-wall-nan-point): while a circle's coordinates,
  *     velocity or radius exceed 1e150 (or a call places such a circle) contact points are not
  *     checked;
+ * D18 EXACT, periodic: a circle moving at 4e299 crosses a cell in less than an ulp of the world
+ *     time, so its crossing events (1000, up to the cap) advance neither time nor position but
+ *     each wraps its stored coordinate by a period: 47 periods out, where the queries' nearest
+ *     image (one shift) no longer reaches it, and query_circle missed it (D7's class, speeds
+ *     beyond the header's Range; world_defects/d18-*): while a coordinate or velocity is beyond
+ *     1e150 in a periodic world, queries are not checked against brute force;
  * D16 fixed: a circle moving slower than 1 given rolling_decel DBL_MAX got a NaN velocity (2k
  *     overflowed in the rolling motion's g'); D17 fixed: a circle of mass 1e308 in a cluster
  *     struck by a kinematic one got an Inf velocity and the contact a NaN point (the cluster
@@ -995,6 +1001,8 @@ static void do_query(model *m, reader *r, int box, const snap *s)
         }
         if ((m->period[0] > 0.0 && !(m->period[0] < 1e9)) || (m->period[1] > 0.0 && !(m->period[1] < 1e9)))
             sure_in = sure_out = 0; /* D11 */
+        if (m->huge && (m->period[0] > 0.0 || m->period[1] > 0.0))
+            sure_in = sure_out = 0; /* D18: at speeds beyond 1e150 stored positions leave the period */
 #endif
         in_out = 0;
         listed = 0;
