@@ -363,6 +363,29 @@ static void test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velo
         if (light)
             TEST_ASSERT_EQUAL_DOUBLE(got[1][2].vel.x, got[0][2].vel.x);
     }
+    {   /* masses 1e308 and 1e-300, 2^2020 apart: no common unit, the pair functions resolve it */
+        cc_world_def d;
+        tw_mem m;
+        cc_world *w;
+        cc_circle k = {{-2.5, 0.0}, {1.0, 0.0}, 0.5, INFINITY}, h = {{0.0, 0.0}, {0.0, 0.0}, 1.0, 1e308};
+        cc_circle l = {{2.0, 0.0}, {0.0, 0.0}, 1.0, 1e-300}, o;
+        cc_world_def_init(&d);
+        d.max_circles = 4;
+        d.on_contact = check_contact;
+        w = tw_make(&m, &d, 0);
+        TEST_ASSERT_NOT_NULL(w);
+        TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &k));
+        TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &h));
+        TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &l));
+        g_bad_points = 0;
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.5));
+        TEST_ASSERT_EQUAL_INT(0, g_bad_points);
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &o));
+        TEST_ASSERT_DOUBLE_WITHIN(1e-12, 2.0, o.vel.x);
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 2, &o));
+        TEST_ASSERT_DOUBLE_WITHIN(1e-12, 4.0, o.vel.x);
+        tw_free(&m);
+    }
 }
 
 int main(void)

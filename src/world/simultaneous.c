@@ -333,7 +333,7 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
     scale = cc__clu_scale(&c);
     if (cc__cluster_resolve(c.body, c.nb, c.contact, c.nc, cc__clu_restitution(&c), w->rest_speed, c.scratch,
                             c.scratch_bytes, &rep) != CC_OK)
-        return cc__world_resolve_pairwise(w, touch, n); /* cannot happen: valid by construction */
+        return cc__world_resolve_pairwise(w, touch, n); /* an inverse mass not finite: masses 2^1024 apart */
     /* new velocities from this instant on: each changed body is carried to now first */
     for (i = 0; i < c.nb; i++) {
         cc__body *b = &B[c.id[i]];
