@@ -388,6 +388,43 @@ static void test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velo
     }
 }
 
+/* D19: in a periodic world (period 24.0249 along x) a circle added at x = 100, four periods out,
+ * is kept there until it is filed: at the next step in SWEPT and DISCRETE (and in EXACT before
+ * the first step). get_circle reports it at its image 3.90, but the queries took the nearest
+ * image with one shift of a period (76) and missed it: query_box found nothing at (4.6, -2.6) to
+ * (5.3, -2.0), 0.7 from its centre, radius 1.5 (fuzz input world_defects/d19-*, DISCRETE). Every
+ * mode, a box and a disc, from both sides (x = 100 and x = -100), before and after a step. */
+static void test_a_circle_put_periods_out_is_found_by_the_queries(void)
+{
+    int mode, side, step;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
+        for (side = 0; side < 2; side++) {
+            cc_world_def d;
+            tw_mem m;
+            cc_world *w;
+            cc_circle c = {{side ? -100.0 : 100.0, -2.2821576763485476}, {0.0, 0.0}, 1.5, INFINITY}, o;
+            cc_vec2 lo, hi, q;
+            int ids[4];
+            cc_world_def_init(&d);
+            d.mode = mode;
+            d.max_circles = 8;
+            d.period.x = 24.024896265560166;
+            w = tw_make(&m, &d, 0);
+            TEST_ASSERT_NOT_NULL(w);
+            TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
+            for (step = 0; step < 2; step++) {
+                TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
+                TEST_ASSERT_TRUE(o.pos.x >= 0.0 && o.pos.x < d.period.x);
+                lo.x = o.pos.x + 0.7, lo.y = o.pos.y - 0.3, hi.x = lo.x + 0.66, hi.y = o.pos.y + 0.3;
+                TEST_ASSERT_EQUAL_INT(1, cc_world_query_box(w, lo, hi, ~0u, ids, 4));
+                q.x = o.pos.x - 1.0, q.y = o.pos.y;
+                TEST_ASSERT_EQUAL_INT(1, cc_world_query_circle(w, q, 0.1, ~0u, ids, 4));
+                TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.5));
+            }
+            tw_free(&m);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -399,5 +436,6 @@ int main(void)
     RUN_TEST(test_a_periodic_cast_past_dbl_max_is_defined);
     RUN_TEST(test_the_largest_deceleration_stops_a_slow_circle_at_once);
     RUN_TEST(test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velocities);
+    RUN_TEST(test_a_circle_put_periods_out_is_found_by_the_queries);
     return UNITY_END();
 }
