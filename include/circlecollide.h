@@ -263,8 +263,11 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * Range     Impacts square lengths and multiply speeds by times: with coordinates, radii or
  *           speeds beyond about 2^500 (1e150) they may overflow (an Inf impulse, a NaN contact
  *           point, an overlap left behind), and world times near 1e300 lose positions; keep
- *           scenes below that (the world fuzzer's D7, D10, D12, D14 in
- *           tests/fuzz/world_defects/). Queries compare scaled squares and hold at any size; a
+ *           scenes below that (the world fuzzer's D7, D10, D12, D14, D18 in
+ *           tests/fuzz/world_defects/). The world time is one double: a circle that crosses
+ *           a grid cell in less than one rounding step of it (speed * ulp(time) > cell size,
+ *           e.g. speed 20 with cells of 1 at time 1e15) may be filed ahead of its position and
+ *           a grid query may miss it (D18); restart the clock (a new world) long before. Queries compare scaled squares and hold at any size; a
  *           step that would carry a circle past 2^1017 is refused (cc_world_step). Masses may
  *           be any the contract allows (up to DBL_MAX): velocities after impacts are computed
  *           from mass ratios and stay finite, but an impulse beyond DBL_MAX (a circle of mass
