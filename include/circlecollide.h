@@ -263,9 +263,16 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * Range     Impacts square lengths and multiply speeds by times: with coordinates, radii or
  *           speeds beyond about 2^500 (1e150) they may overflow (an Inf impulse, a NaN contact
  *           point, an overlap left behind), and world times near 1e300 lose positions; keep
- *           scenes below that (the world fuzzer's D7, D10, D12, D14 in
- *           tests/fuzz/world_defects/). Queries compare scaled squares and hold at any size; a
- *           step that would carry a circle past 2^1017 is refused (cc_world_step).
+ *           scenes below that (the world fuzzer's D7, D10, D12, D14, D18 in
+ *           tests/fuzz/world_defects/). The world time is one double: a circle that crosses
+ *           a grid cell in less than one rounding step of it (speed * ulp(time) > cell size,
+ *           e.g. speed 20 with cells of 1 at time 1e15) may be filed ahead of its position and
+ *           a grid query may miss it (D18); restart the clock (a new world) long before. Queries compare scaled squares and hold at any size; a
+ *           step that would carry a circle past 2^1017 is refused (cc_world_step). Masses may
+ *           be any the contract allows (up to DBL_MAX): velocities after impacts are computed
+ *           from mass ratios and stay finite, but an impulse beyond DBL_MAX (a circle of mass
+ *           1e308 struck at speed 1) is reported as +INFINITY, and cc_world_stats.virial and
+ *           wall_impulse are +INFINITY from then on.
  * Overlaps  Overlaps the caller makes are resolved, never ignored: in EXACT, a circle added or
  *           set on top of others is pushed apart from each at once with cc_separate (shares
  *           inverse to the masses), then given the impact if the pair approaches; a circle
@@ -331,7 +338,9 @@ typedef struct cc_contact_event {
     double t;       /* world time of the contact */
     cc_vec2 point;  /* contact point */
     cc_vec2 normal; /* unit normal from a towards b (or the wall) */
-    double impulse; /* magnitude of the normal impulse applied (mass * velocity) */
+    double impulse; /* magnitude of the normal impulse applied (mass * velocity); never NaN,
+                       +INFINITY when it exceeds DBL_MAX (a mass near DBL_MAX: the velocities
+                       are computed without it and stay finite; see "Range") */
 } cc_contact_event;
 
 /* Called for each impulse, from inside the call that applied it: cc_world_step (every mode),

@@ -155,6 +155,34 @@ static void test_sweep_then_respond(void)
     TEST_ASSERT_EQUAL_MEMORY(&before, &k2, sizeof k2);
 }
 
+/* Masses near the largest finite number (the world fuzzer's D17 found the world's cluster
+ * solver passing through the impulse m (1 + e) v_n, which overflows there): the pair response
+ * goes through mass shares, never the impulse, so the velocities are finite and right.
+ * REAL_MAX against an immovable b at speed 1: va' = -1; two masses REAL_MAX head on at e = 1
+ * swap their velocities (m_a + m_b would overflow); REAL_MAX at 1 against REAL_MAX / 4 at -1
+ * (vn = -2): 1 - 4 (1/5) = 0.2 and -1 + 4 (4/5) = 2.2; a subnormal mass against REAL_MAX
+ * bounces as off a wall. */
+static void test_masses_near_the_largest_number(void)
+{
+    Contact k = contact_n(1, 0);
+    Circle a = circle(0, 0, 1, 0, 1, REAL_MAX), b = circle(2, 0, 0, 0, 1, INFINITY);
+    Circle c = circle(0, 0, 1, 0, 1, REAL_MAX), d = circle(2, 0, -1, 0, 1, REAL_MAX);
+    Circle p = circle(0, 0, 1, 0, 1, REAL_MAX), q = circle(2, 0, -1, 0, 1, 0.25 * REAL_MAX);
+    Circle x = circle(0, 0, 1, 0, 1, 1e-40), y = circle(2, 0, 0, 0, 1, REAL_MAX);
+    TEST_ASSERT_EQUAL_INT(CC_HIT, F(cc_respond)(&a, &b, &k, 1));
+    EXPECT_VEC_NEAR(2, -1, 0, a.vel);
+    TEST_ASSERT_EQUAL_INT(CC_HIT, F(cc_respond)(&c, &d, &k, 1));
+    EXPECT_VEC_NEAR(2, -1, 0, c.vel);
+    EXPECT_VEC_NEAR(2, 1, 0, d.vel);
+    /* vn = -2, e = 1: p' = 1 + 2 (-2) (1/5) = 0.2, q' = -1 - 2 (-2) (4/5) = 2.2 */
+    TEST_ASSERT_EQUAL_INT(CC_HIT, F(cc_respond)(&p, &q, &k, 1));
+    EXPECT_VEC_NEAR(4, 0.2, 0, p.vel);
+    EXPECT_VEC_NEAR(4, 2.2, 0, q.vel);
+    TEST_ASSERT_EQUAL_INT(CC_HIT, F(cc_respond)(&x, &y, &k, 1));
+    EXPECT_VEC_NEAR(2, -1, 0, x.vel);
+    TEST_ASSERT_TRUE(isfinite((double)y.vel.x) && y.vel.x >= 0 && y.vel.y == 0);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -164,6 +192,7 @@ int main(void)
     RUN_TEST(test_immovable);
     RUN_TEST(test_not_approaching);
     RUN_TEST(test_extreme_mass_ratio);
+    RUN_TEST(test_masses_near_the_largest_number);
     RUN_TEST(test_respond_segment);
     RUN_TEST(test_respond_segment_mass_unused);
     RUN_TEST(test_sweep_then_respond);

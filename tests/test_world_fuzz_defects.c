@@ -244,6 +244,187 @@ static void test_a_periodic_cast_past_dbl_max_is_defined(void)
     tw_free(&m);
 }
 
+/* D16: a circle moving slower than 1 given the largest finite deceleration (DBL_MAX, valid)
+ * through set_circle_props ended with velocity (NaN, NaN). Its rolling coefficient
+ * k = decel / (2 |v|) is finite but above DBL_MAX / 2, and the motion's g'(tau) = 1 - 2 k tau
+ * was evaluated as (2 k) tau = Inf * 0 when the body was brought to the present (tau = 0) by
+ * the props call itself (src/rolling_roots.inc cc__roll_motion, now 1 - 2 (k tau), fixed on
+ * 2026-11-26 for cc_rolling_advancef's 2 tau; this is the world's path to it). The fuzz input
+ * (world_defects/d16-*, now in corpus_world/) also made it a sensor and gave it restitution
+ * 1e-308: neither matters. Every speed below 1 (and above) must stop the circle at once, where
+ * it is, and a circle in its way must not be struck. */
+static void test_the_largest_deceleration_stops_a_slow_circle_at_once(void)
+{
+    static const double speeds[5] = {0.76370930252578206, 1e-3, 0.5, 1.5, 1e-200};
+    int k, sensor;
+    for (k = 0; k < 5; k++)
+        for (sensor = 0; sensor < 2; sensor++) {
+            cc_world_def d;
+            tw_mem m;
+            cc_world *w;
+            cc_circle a = {{-6.4315352648058468, -17.174086211408429}, {1.5274186050515643e-10, -speeds[k]}, 0.2,
+                           1.296680497925311};
+            cc_circle b = {{-6.4315352648058468, -19.0}, {0.0, 0.0}, 0.5, 1.0}, o;
+            cc_circle_props p;
+            cc_world_def_init(&d);
+            d.max_circles = 4;
+            d.rolling_decel = 0.49792531120331945;
+            w = tw_make(&m, &d, 0);
+            TEST_ASSERT_NOT_NULL(w);
+            TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &a));
+            TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &b));
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.0)); /* built: the props call predicts again */
+            p.struct_size = sizeof p;
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle_props(w, 0, &p));
+            p.rolling_decel = DBL_MAX;
+            p.restitution = 1.1125369292536007e-308;
+            p.sensor = sensor;
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle_props(w, 0, &p));
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
+            TEST_ASSERT_TRUE(isfinite(o.vel.x) && isfinite(o.vel.y)); /* it was (NaN, NaN) */
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.28215767634854771));
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
+            TEST_ASSERT_EQUAL_DOUBLE(0.0, o.vel.x);
+            TEST_ASSERT_EQUAL_DOUBLE(0.0, o.vel.y);
+            TEST_ASSERT_EQUAL_DOUBLE(a.pos.x, o.pos.x); /* it stops within 1e-308 of where it was */
+            TEST_ASSERT_EQUAL_DOUBLE(a.pos.y, o.pos.y);
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &o));
+            TEST_ASSERT_TRUE(o.vel.x == 0.0 && o.vel.y == 0.0);
+            tw_free(&m);
+        }
+}
+
+/* D17: a circle of mass 1e308 struck by a kinematic circle (mass +INFINITY) at speed 1. Its
+ * velocity change, (1 + e) v_n along the normal, is finite, but the simultaneous-impact solver
+ * (cluster.c) found it through the impulse, v_n / (1 / m) = 1e308 * 2 = Inf, then
+ * Inf * (1 / m): the circle left with an infinite velocity and the contact point NaN. The pair
+ * path (resolve.c, cc_respond's mass shares) was right but for the reported impulse, which is
+ * +INFINITY (the header's rule for impulses beyond DBL_MAX). Here the heavy circle touches a
+ * light one (mass 1), so that the impact is a cluster of three; and alone (a pair), and the
+ * same scenes with masses 2^-1000 times as large (ordinary arithmetic) give the same
+ * velocities. */
+static int g_bad_points;
+static double g_max_impulse;
+
+static void check_contact(const cc_contact_event *e, void *user)
+{
+    (void)user;
+    if (!(isfinite(e->point.x) && isfinite(e->point.y)) || isnan(e->impulse) || !(e->impulse >= 0.0))
+        g_bad_points++;
+    if (e->impulse > g_max_impulse)
+        g_max_impulse = e->impulse;
+}
+
+static void test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velocities(void)
+{
+    int light, scaled;
+    for (light = 0; light < 2; light++) {
+        cc_circle got[2][3];
+        for (scaled = 0; scaled < 2; scaled++) {
+            cc_world_def d;
+            tw_mem m;
+            cc_world *w;
+            double heavy = scaled ? 1e308 * 0x1p-1000 : 1e308, lm = scaled ? 0x1p-1000 : 1.0;
+            cc_circle k = {{-2.5, 0.0}, {1.0, 0.0}, 0.5, INFINITY};
+            cc_circle h = {{0.0, 0.0}, {0.0, 0.0}, 1.0, heavy};
+            cc_circle l = {{2.0, 0.0}, {0.0, 0.0}, 1.0, lm};
+            int i, n = light ? 3 : 2;
+            cc_world_def_init(&d);
+            d.max_circles = 4;
+            d.on_contact = check_contact;
+            w = tw_make(&m, &d, 0);
+            TEST_ASSERT_NOT_NULL(w);
+            TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &k));
+            TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &h));
+            if (light)
+                TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &l));
+            g_bad_points = 0;
+            g_max_impulse = 0.0;
+            TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.5)); /* the impact at t = 1 */
+            TEST_ASSERT_EQUAL_INT(0, g_bad_points); /* the point was (NaN, NaN) */
+            for (i = 0; i < n; i++) {
+                TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, i, &got[scaled][i]));
+                TEST_ASSERT_TRUE(isfinite(got[scaled][i].vel.x) && isfinite(got[scaled][i].vel.y));
+                TEST_ASSERT_TRUE(isfinite(got[scaled][i].pos.x) && isfinite(got[scaled][i].pos.y));
+            }
+            /* heavy: 2 along x (e = 1 against an infinite mass), the light one 4 once struck */
+            TEST_ASSERT_DOUBLE_WITHIN(1e-12, 2.0, got[scaled][1].vel.x);
+            if (light)
+                TEST_ASSERT_DOUBLE_WITHIN(1e-12, 4.0, got[scaled][2].vel.x);
+            /* the impulse on the heavy one, 2e308, is beyond DBL_MAX: +INFINITY; scaled, finite */
+            if (scaled)
+                TEST_ASSERT_TRUE(isfinite(g_max_impulse) && g_max_impulse > 0.0);
+            else
+                TEST_ASSERT_TRUE(isinf(g_max_impulse));
+            tw_free(&m);
+        }
+        TEST_ASSERT_EQUAL_DOUBLE(got[1][1].vel.x, got[0][1].vel.x); /* the same bits at both scales */
+        TEST_ASSERT_EQUAL_DOUBLE(got[1][1].vel.y, got[0][1].vel.y);
+        if (light)
+            TEST_ASSERT_EQUAL_DOUBLE(got[1][2].vel.x, got[0][2].vel.x);
+    }
+    {   /* masses 1e308 and 1e-300, 2^2020 apart: no common unit, the pair functions resolve it */
+        cc_world_def d;
+        tw_mem m;
+        cc_world *w;
+        cc_circle k = {{-2.5, 0.0}, {1.0, 0.0}, 0.5, INFINITY}, h = {{0.0, 0.0}, {0.0, 0.0}, 1.0, 1e308};
+        cc_circle l = {{2.0, 0.0}, {0.0, 0.0}, 1.0, 1e-300}, o;
+        cc_world_def_init(&d);
+        d.max_circles = 4;
+        d.on_contact = check_contact;
+        w = tw_make(&m, &d, 0);
+        TEST_ASSERT_NOT_NULL(w);
+        TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &k));
+        TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &h));
+        TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &l));
+        g_bad_points = 0;
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.5));
+        TEST_ASSERT_EQUAL_INT(0, g_bad_points);
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &o));
+        TEST_ASSERT_DOUBLE_WITHIN(1e-12, 2.0, o.vel.x);
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 2, &o));
+        TEST_ASSERT_DOUBLE_WITHIN(1e-12, 4.0, o.vel.x);
+        tw_free(&m);
+    }
+}
+
+/* D19: in a periodic world (period 24.0249 along x) a circle added at x = 100, four periods out,
+ * is kept there until it is filed: at the next step in SWEPT and DISCRETE (and in EXACT before
+ * the first step). get_circle reports it at its image 3.90, but the queries took the nearest
+ * image with one shift of a period (76) and missed it: query_box found nothing at (4.6, -2.6) to
+ * (5.3, -2.0), 0.7 from its centre, radius 1.5 (fuzz input world_defects/d19-*, DISCRETE). Every
+ * mode, a box and a disc, from both sides (x = 100 and x = -100), before and after a step. */
+static void test_a_circle_put_periods_out_is_found_by_the_queries(void)
+{
+    int mode, side, step;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
+        for (side = 0; side < 2; side++) {
+            cc_world_def d;
+            tw_mem m;
+            cc_world *w;
+            cc_circle c = {{side ? -100.0 : 100.0, -2.2821576763485476}, {0.0, 0.0}, 1.5, INFINITY}, o;
+            cc_vec2 lo, hi, q;
+            int ids[4];
+            cc_world_def_init(&d);
+            d.mode = mode;
+            d.max_circles = 8;
+            d.period.x = 24.024896265560166;
+            w = tw_make(&m, &d, 0);
+            TEST_ASSERT_NOT_NULL(w);
+            TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
+            for (step = 0; step < 2; step++) {
+                TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
+                TEST_ASSERT_TRUE(o.pos.x >= 0.0 && o.pos.x < d.period.x);
+                lo.x = o.pos.x + 0.7, lo.y = o.pos.y - 0.3, hi.x = lo.x + 0.66, hi.y = o.pos.y + 0.3;
+                TEST_ASSERT_EQUAL_INT(1, cc_world_query_box(w, lo, hi, ~0u, ids, 4));
+                q.x = o.pos.x - 1.0, q.y = o.pos.y;
+                TEST_ASSERT_EQUAL_INT(1, cc_world_query_circle(w, q, 0.1, ~0u, ids, 4));
+                TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.5));
+            }
+            tw_free(&m);
+        }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -253,5 +434,8 @@ int main(void)
     RUN_TEST(test_a_query_finds_a_huge_circle_covering_it);
     RUN_TEST(test_a_swept_periodic_step_of_half_a_period_is_refused);
     RUN_TEST(test_a_periodic_cast_past_dbl_max_is_defined);
+    RUN_TEST(test_the_largest_deceleration_stops_a_slow_circle_at_once);
+    RUN_TEST(test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velocities);
+    RUN_TEST(test_a_circle_put_periods_out_is_found_by_the_queries);
     return UNITY_END();
 }

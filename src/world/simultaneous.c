@@ -118,6 +118,35 @@ static int cc__clu_body(cc__clu *c, int k)
     return c->nb++;
 }
 
+/* The model's arithmetic is homogeneous in the masses: inverse masses all multiplied by 2^s
+ * give the same velocities and impulses divided by 2^s, bit for bit while nothing under- or
+ * overflows. With a finite mass beyond 2^500 (or all below 2^-500) something would: a body of
+ * mass 1e308 against an immovable one or a wall has an impulse (1 + e) v_n / (1 / m) beyond
+ * DBL_MAX, then Inf * (1 / m) for its velocity (the world fuzzer's D17), and 1 / m itself is
+ * subnormal. Such a cluster is solved with its heaviest finite mass as the unit (2^s of the
+ * returned s); every other cluster as it is (s = 0, the bits of 1.0). A body whose scaled
+ * inverse mass overflows (masses more than 2^1024 apart) makes the model refuse the cluster,
+ * which the caller then resolves pairwise with the pair functions' mass shares. */
+static int cc__clu_scale(cc__clu *c)
+{
+    const cc__cold *C = CC__CARR(c->w, cc__cold, off_cold);
+    double mmax = 0.0;
+    int i, s;
+    for (i = 0; i < c->nb; i++) {
+        double m = C[c->id[i]].m;
+        if (!isinf(m) && m > mmax)
+            mmax = m;
+    }
+    if (!(mmax > 0x1p500 || mmax < 0x1p-500))
+        return 0;
+    s = ilogb(mmax);
+    for (i = 0; i < c->nb; i++) {
+        double m = C[c->id[i]].m;
+        c->body[i].inv_mass = isinf(m) ? 0.0 : 1.0 / ldexp(m, -s);
+    }
+    return s;
+}
+
 /* Lists contact a-b (b = -1: wall seg) unless it is listed already (a seed, or found from the
  * other body) or the cluster is full. */
 static void cc__clu_contact(cc__clu *c, int a, int b, int seg, cc_vec2 n)
@@ -284,7 +313,7 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
     cc__body *B = CC__ARR(w, cc__body, off_body);
     cc__clu c;
     cc__cluster_report rep;
-    int i, hits = 0;
+    int i, hits = 0, scale;
     cc__clu_carve(w, &c);
     /* the impacts themselves first, whatever their gap */
     for (i = 0; i < n; i++) {
@@ -301,9 +330,10 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
     cc__clu_gather(&c);
     if (c.nc <= 1 && n == 1)
         return cc__world_resolve_pairwise(w, touch, n); /* nothing else touches: a pair impact */
+    scale = cc__clu_scale(&c);
     if (cc__cluster_resolve(c.body, c.nb, c.contact, c.nc, cc__clu_restitution(&c), w->rest_speed, c.scratch,
                             c.scratch_bytes, &rep) != CC_OK)
-        return cc__world_resolve_pairwise(w, touch, n); /* cannot happen: valid by construction */
+        return cc__world_resolve_pairwise(w, touch, n); /* an inverse mass not finite: masses 2^1024 apart */
     /* new velocities from this instant on: each changed body is carried to now first */
     for (i = 0; i < c.nb; i++) {
         cc__body *b = &B[c.id[i]];
@@ -334,7 +364,8 @@ int cc__world_resolve_cluster(cc_world *w, const cc__touch *touch, int n)
             continue;
         ev.t = 0.0;
         ev.normal = k->normal;
-        cc__world_report(w, c.id[k->a], k->b >= 0 ? c.id[k->b] : -1, c.seg[i], &ev, k->impulse);
+        /* the impulse in the masses' own unit: beyond DBL_MAX it is +INFINITY (the header's rule) */
+        cc__world_report(w, c.id[k->a], k->b >= 0 ? c.id[k->b] : -1, c.seg[i], &ev, ldexp(k->impulse, scale));
         hits++;
     }
     /* The event loop moves on because the impacts it hands in get resolved. The model calls a

@@ -163,6 +163,7 @@ typedef struct model {
     int dead;     /* the input stops here (D7; a jam, below) */
     int capped;   /* steps that ended at CC_EVENT_LIMIT */
     int op, huge; /* huge: a live circle's coordinate or velocity is beyond 1e150 (D7) */
+    double placing; /* the mass of the circle an add or set call places (0 otherwise) */
     double call_t0;
     int ncb;
 } model;
@@ -293,6 +294,16 @@ static void on_contact(const cc_contact_event *e, void *user)
     ln = hypot(e->normal.x, e->normal.y);
     REQUIRE(m, fabs(ln - 1.0) <= 1e-6, "contact event: normal not a unit vector");
     REQUIRE(m, !isnan(e->impulse) && e->impulse >= 0.0, "contact event: negative or NaN impulse");
+    if (isinf(e->impulse)) { /* the header: +INFINITY only beyond DBL_MAX, so with a mass near it (D17) */
+        int i, heavy = 0;
+        for (i = 0; i < m->maxc; i++)
+            heavy |= m->live[i] && isfinite(m->mass[i]) && m->mass[i] > 1e150;
+        heavy |= isfinite(m->placing) && m->placing > 1e150;
+#ifndef FUZZ_WORLD_STRICT
+        heavy |= m->huge;
+#endif
+        REQUIRE(m, heavy, "contact event: an infinite impulse without a mass beyond 1e150");
+    }
     if (isnan(e->point.x) || isnan(e->point.y) || getenv("FUZZ_WORLD_TRACE"))
         fprintf(stderr, "fuzz_world: contact a %d b %d segment %d t %.17g point (%.17g, %.17g) normal (%.17g, %.17g) "
                         "impulse %.17g\n", e->a, e->b, e->segment, e->t, e->point.x, e->point.y, e->normal.x,
@@ -561,6 +572,17 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  *     1e300 overflow; world_defects/d14-huge-radius-wall-nan-point): while a circle's coordinates,
  *     velocity or radius exceed 1e150 (or a call places such a circle) contact points are not
  *     checked;
+ * D18 EXACT, periodic: a circle moving at 4e299 crosses a cell in less than an ulp of the world
+ *     time, so its crossing events (1000, up to the cap) advance neither time nor position but
+ *     each wraps its stored coordinate by a period: 47 periods out, where the queries' nearest
+ *     image (one shift) no longer reaches it, and query_circle missed it (D7's class, speeds
+ *     beyond the header's Range; world_defects/d18-*): while a coordinate or velocity is beyond
+ *     1e150 in a periodic world, queries are not checked against brute force;
+ * D16 fixed: a circle moving slower than 1 given rolling_decel DBL_MAX got a NaN velocity (2k
+ *     overflowed in the rolling motion's g'); D17 fixed: a circle of mass 1e308 in a cluster
+ *     struck by a kinematic one got an Inf velocity and the contact a NaN point (the cluster
+ *     solver's impulse overflowed); neither was stepped around; contact impulses may be
+ *     +INFINITY (the header's rule) only while some circle's mass exceeds 1e150;
  * D8  fixed: SWEPT, periodic: a step that carried a circle more than a period was accepted and
  *     query_box then missed that circle; SWEPT now refuses a step carrying a circle half a period
  *     (swept_too_long checks it); DISCRETE's steps keep to the header's precondition. */
@@ -908,6 +930,12 @@ static void do_stats(model *m, reader *r)
                        !(b->max_overlap < a->max_overlap),
                 "get_stats: a counter went down");
         REQUIRE(m, b->stale_events <= b->events, "get_stats: more stale events than events");
+#ifndef FUZZ_WORLD_STRICT
+        if (!m->huge) /* (D7's class: Inf impulses at speeds near DBL_MAX) */
+#endif
+            REQUIRE(m, !isnan(b->virial) && !isnan(b->wall_impulse) && !(b->virial < a->virial) &&
+                           !(b->wall_impulse < a->wall_impulse),
+                    "get_stats: virial or wall_impulse NaN or decreasing (sums of impulses >= 0)");
         m->stats = u.s;
     }
 }
@@ -973,6 +1001,8 @@ static void do_query(model *m, reader *r, int box, const snap *s)
         }
         if ((m->period[0] > 0.0 && !(m->period[0] < 1e9)) || (m->period[1] > 0.0 && !(m->period[1] < 1e9)))
             sure_in = sure_out = 0; /* D11 */
+        if (m->huge && (m->period[0] > 0.0 || m->period[1] > 0.0))
+            sure_in = sure_out = 0; /* D18: at speeds beyond 1e150 stored positions leave the period */
 #endif
         in_out = 0;
         listed = 0;
@@ -1119,7 +1149,9 @@ static int one_call(model *m, reader *r, int op)
         if (getenv("FUZZ_WORLD_TRACE"))
             fprintf(stderr, "add (%.17g, %.17g) v (%.17g, %.17g) r %.17g m %.17g\n", c.pos.x, c.pos.y, c.vel.x,
                     c.vel.y, c.radius, c.mass);
+        m->placing = c.mass;
         rc = cc_world_add_circle(m->w, &c);
+        m->placing = 0.0;
         if (!circle_valid(&c))
             REQUIRE(m, rc == CC_ERR_INVALID, "add_circle: an invalid circle not INVALID");
         else if (m->count == m->maxc)
@@ -1166,7 +1198,9 @@ static int one_call(model *m, reader *r, int op)
         }
         if (place_ub(m, &c))
             break; /* D2 */
+        m->placing = c.mass;
         rc = cc_world_set_circle(m->w, id, &c);
+        m->placing = 0.0;
         if (!live_id(m, id))
             REQUIRE(m, rc == CC_ERR_NOT_FOUND || ((!circle_valid(&c) || !fits_period(m, &c)) && rc == CC_ERR_INVALID),
                     "set_circle: a dead id not NOT_FOUND");
