@@ -145,7 +145,7 @@ static uint32_t cc__slots(const cc_world_def *d)
 static size_t cc__layout(const cc_world_def *d, cc_world *w)
 {
     size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
-    size_t offs[18], sizes[18];
+    size_t offs[17], sizes[17];
     int cal_nb = cc__calendar_buckets(d->mode, d->max_circles);
     int clu_b, clu_c;
     int k;
@@ -153,7 +153,7 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[1] = n * sizeof(cc__event);
     sizes[2] = n * sizeof(cc__cold);
     sizes[3] = n * sizeof(cc__heap_entry); /* heap */
-    sizes[4] = n * sizeof(int32_t); /* heap positions */
+    sizes[4] = (cal_nb > 0 ? 3 : 1) * n * sizeof(int32_t); /* heap positions (and calendar links) */
     sizes[5] = n * sizeof(int32_t); /* touched list */
     sizes[6] = (size_t)cc__slots(d) * sizeof(int32_t);
     sizes[7] = (size_t)d->max_segments * sizeof(cc_segment);
@@ -166,8 +166,7 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[14] = 2 * (size_t)d->max_segments * sizeof(cc__wall_node);
     sizes[15] = (size_t)d->max_segments * sizeof(int32_t);
     sizes[16] = cal_nb > 0 ? ((size_t)cal_nb + 1) * sizeof(int32_t) : 0; /* the calendar's buckets */
-    sizes[17] = cal_nb > 0 ? 2 * n * sizeof(int32_t) : 0;               /* and its links */
-    for (k = 0; k < 18; k++) {
+    for (k = 0; k < 17; k++) {
         offs[k] = off;
         off += cc__align16(sizes[k]);
     }
@@ -189,7 +188,8 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_wallnode = offs[14];
         w->off_wallorder = offs[15];
         w->off_calhead = offs[16];
-        w->off_callink = offs[17];
+        w->off_callink = offs[4] + sizeof(int32_t);
+        w->hpos_stride = cal_nb > 0 ? 3 : 1;
         w->cal_nb = cal_nb;
         w->clu_bodies = clu_b;
         w->clu_contacts = clu_c;
@@ -257,7 +257,7 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
         int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
         int i;
         for (i = 0; i < d.max_circles; i++)
-            hpos[i] = -1;
+            hpos[i * w->hpos_stride] = -1;
         cc__queue_clear(w);
     }
     if (w->use_grid)

@@ -147,8 +147,11 @@ struct cc_world {
     int wall_tree_n;                /* walls in the tree; those after it are looked at one by one */
     int clu_bodies, clu_contacts;  /* its capacities; 0 when the world has none */
     /* EXACT's event calendar in front of the heap (calendar.c); cal_nb = 0: none */
-    size_t off_calhead, off_callink; /* cal_nb + 1 bucket heads (the last: overflow); next, prev */
+    size_t off_calhead, off_callink; /* cal_nb + 1 bucket heads (the last: overflow); next, prev
+                                        (off_hpos + 4: body id's at [3 id], [3 id + 1]) */
     int cal_nb, cal_tuned;           /* buckets (a power of two); whether blocks are in use */
+    int hpos_stride;                 /* int32s a body between hpos entries: 3 with a calendar, whose
+                                        links (next, prev) follow each body's hpos (one line), else 1 */
     int cal_n, cal_over;             /* bodies in the buckets (overflow included), in the overflow */
     int64_t cal_cur;                 /* the heap holds the blocks up to this one */
     double cal_w, cal_inv_w, cal_base; /* block width, its inverse, where block 0 begins */
