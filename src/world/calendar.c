@@ -13,7 +13,9 @@
  * for a calendar (cal_nb = 0), every event lives in the heap as before.
  *
  * hpos[3 id] says where body id is: >= 0 its heap position, -1 not queued, <= -2 in bucket -2 - hpos
- * (bucket cal_nb is the overflow list). */
+ * (bucket cal_nb is the overflow list). In a calendar world a body's hpos and its bucket links
+ * (next, prev) are one 12-byte node (hpos_stride 3; off_callink = off_hpos + 4), so that filing,
+ * unfiling and pouring a body touch one line. */
 #include "world_internal.h"
 
 #define CC__CAL_PER_BLOCK 32.0 /* events a block, the aim of the tuning */

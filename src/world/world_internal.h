@@ -128,8 +128,7 @@ struct cc_world {
     int n_circles;    /* live circles */
     int n_segments;
     int id_end;       /* ids in [0, id_end) have been used at least once */
-    int free_top;     /* removed ids waiting for reuse (a stack threaded through their props' */
-    int free_head;    /* free_next, free_head the last removed; read only when free_top > 0) */
+    int free_top, free_head; /* removed ids waiting for reuse, the last (a stack through props' free_next) */
     int heap_n;
     int n_touched;    /* bodies on the touched list */
     uint64_t events_at_sort; /* stats.events when storage was last sorted */
@@ -147,11 +146,8 @@ struct cc_world {
     int wall_tree_n;                /* walls in the tree; those after it are looked at one by one */
     int clu_bodies, clu_contacts;  /* its capacities; 0 when the world has none */
     /* EXACT's event calendar in front of the heap (calendar.c); cal_nb = 0: none */
-    size_t off_calhead, off_callink; /* cal_nb + 1 bucket heads (the last: overflow); next, prev
-                                        (off_hpos + 4: body id's at [3 id], [3 id + 1]) */
-    int cal_nb, cal_tuned;           /* buckets (a power of two); whether blocks are in use */
-    int hpos_stride;                 /* int32s a body between hpos entries: 3 with a calendar, whose
-                                        links (next, prev) follow each body's hpos (one line), else 1 */
+    size_t off_calhead, off_callink; /* cal_nb + 1 bucket heads (overflow last); next, prev: after hpos */
+    int cal_nb, cal_tuned, hpos_stride; /* buckets (a power of two); blocks in use; hpos[id * stride] */
     int cal_n, cal_over;             /* bodies in the buckets (overflow included), in the overflow */
     int64_t cal_cur;                 /* the heap holds the blocks up to this one */
     double cal_w, cal_inv_w, cal_base; /* block width, its inverse, where block 0 begins */
