@@ -68,11 +68,11 @@ static void check_books(cc_world *w)
         return;
     for (b = 0; b <= w->cal_nb; b++) {
         int32_t j, prev = -1;
-        for (j = head[b]; j >= 0; prev = j, j = link[2 * j]) {
+        for (j = head[b]; j >= 0; prev = j, j = link[3 * j]) {
             double key = ev[j].t < ev[j].t_cross ? ev[j].t : ev[j].t_cross;
             double blk = (key - w->cal_base) * w->cal_inv_w;
-            TEST_ASSERT_EQUAL_INT(-2 - b, hpos[j]);
-            TEST_ASSERT_EQUAL_INT(prev, link[2 * j + 1]);
+            TEST_ASSERT_EQUAL_INT(-2 - b, hpos[3 * j]); /* (body j's hpos, next, prev: one node) */
+            TEST_ASSERT_EQUAL_INT(prev, link[3 * j + 1]);
             TEST_ASSERT_TRUE(blk >= (double)(w->cal_cur + 1));
             if (b < w->cal_nb) {
                 TEST_ASSERT_TRUE(blk < (double)(w->cal_cur + w->cal_nb));
@@ -85,7 +85,7 @@ static void check_books(cc_world *w)
     TEST_ASSERT_EQUAL_INT(w->cal_n, n);
     TEST_ASSERT_EQUAL_INT(w->cal_over, over);
     for (k = 0; k < w->heap_n; k++) {
-        TEST_ASSERT_EQUAL_INT(k, hpos[heap[k].id]);
+        TEST_ASSERT_EQUAL_INT(k, hpos[3 * heap[k].id]);
         TEST_ASSERT_TRUE((heap[k].key - w->cal_base) * w->cal_inv_w < (double)(w->cal_cur + 1));
     }
 }

@@ -12,8 +12,10 @@
  * of events seen (cal_per_block events a block); before the first tuning, and in a world too small
  * for a calendar (cal_nb = 0), every event lives in the heap as before.
  *
- * hpos[id] says where body id is: >= 0 its heap position, -1 not queued, <= -2 in bucket -2 - hpos
- * (bucket cal_nb is the overflow list). */
+ * hpos[3 id] says where body id is: >= 0 its heap position, -1 not queued, <= -2 in bucket -2 - hpos
+ * (bucket cal_nb is the overflow list). In a calendar world a body's hpos and its bucket links
+ * (next, prev) are one 12-byte node (hpos_stride 3; off_callink = off_hpos + 4), so that filing,
+ * unfiling and pouring a body touch one line. */
 #include "world_internal.h"
 
 #define CC__CAL_PER_BLOCK 32.0 /* events a block, the aim of the tuning */
@@ -40,12 +42,12 @@ static void cc__cal_link_in(cc_world *w, int id, int b)
 {
     int32_t *head = cc__cal_head(w), *link = cc__cal_link(w), *hpos = CC__ARR(w, int32_t, off_hpos);
     int32_t f = head[b];
-    link[2 * id] = f;
-    link[2 * id + 1] = -1;
+    link[3 * id] = f;
+    link[3 * id + 1] = -1;
     if (f >= 0)
-        link[2 * f + 1] = id;
+        link[3 * f + 1] = id;
     head[b] = id;
-    hpos[id] = -2 - b;
+    hpos[3 * id] = -2 - b;
     w->cal_n++;
     if (b == w->cal_nb)
         w->cal_over++;
@@ -54,15 +56,15 @@ static void cc__cal_link_in(cc_world *w, int id, int b)
 static void cc__cal_unlink(cc_world *w, int id)
 {
     int32_t *head = cc__cal_head(w), *link = cc__cal_link(w), *hpos = CC__ARR(w, int32_t, off_hpos);
-    int b = -2 - hpos[id];
-    int32_t nx = link[2 * id], pv = link[2 * id + 1];
+    int b = -2 - hpos[3 * id];
+    int32_t nx = link[3 * id], pv = link[3 * id + 1];
     if (pv >= 0)
-        link[2 * pv] = nx;
+        link[3 * pv] = nx;
     else
         head[b] = nx;
     if (nx >= 0)
-        link[2 * nx + 1] = pv;
-    hpos[id] = -1;
+        link[3 * nx + 1] = pv;
+    hpos[3 * id] = -1;
     w->cal_n--;
     if (b == w->cal_nb)
         w->cal_over--;
@@ -111,14 +113,14 @@ static void cc__cal_tune(cc_world *w, double rate)
         stack[n++] = heap[k].id;
     for (b = 0; b <= w->cal_nb; b++) {
         int32_t j;
-        for (j = head[b]; j >= 0; j = link[2 * j])
+        for (j = head[b]; j >= 0; j = link[3 * j])
             stack[n++] = j;
         head[b] = -1;
     }
     w->heap_n = 0;
     w->cal_n = w->cal_over = 0;
     for (k = 0; k < n; k++)
-        hpos[stack[k]] = -1;
+        hpos[3 * stack[k]] = -1;
     w->cal_w = width;
     w->cal_inv_w = 1.0 / width;
     w->cal_base = w->now;
@@ -146,7 +148,7 @@ static void cc__cal_rescan(cc_world *w)
     int32_t *head = cc__cal_head(w), *link = cc__cal_link(w);
     int32_t j = head[w->cal_nb];
     while (j >= 0) {
-        int32_t nx = link[2 * j];
+        int32_t nx = link[3 * j];
         double key = cc__cal_key(w, j);
         if (cc__cal_block(w, key) < (double)(w->cal_cur + w->cal_nb)) {
             cc__cal_unlink(w, j);
@@ -162,10 +164,9 @@ static inline void cc__cal_prefetch(const cc_world *w, int32_t j)
 {
 #if defined(__GNUC__)
     if (j >= 0) {
-        __builtin_prefetch(&CC__CARR(w, int32_t, off_callink)[2 * j]);
+        __builtin_prefetch(&CC__CARR(w, int32_t, off_callink)[3 * j]);
         __builtin_prefetch(&CC__CARR(w, cc__event, off_ev)[j]);
-        __builtin_prefetch(&CC__CARR(w, int32_t, off_hpos)[j], 1);
-        __builtin_prefetch(&CC__CARR(w, cc__body, off_body)[j]);
+                __builtin_prefetch(&CC__CARR(w, cc__body, off_body)[j]);
     }
 #else
     (void)w, (void)j;
@@ -182,7 +183,7 @@ static void cc__cal_advance(cc_world *w)
         int32_t j;
         if (w->cal_n == w->cal_over) { /* only far events: the window jumps to the earliest */
             double least = HUGE_VAL;
-            for (j = head[w->cal_nb]; j >= 0; j = link[2 * j]) {
+            for (j = head[w->cal_nb]; j >= 0; j = link[3 * j]) {
                 double blk = cc__cal_block(w, cc__cal_key(w, j));
                 least = blk < least ? blk : least;
             }
@@ -209,9 +210,9 @@ static void cc__cal_advance(cc_world *w)
         }
         b = (int)(w->cal_cur & (int64_t)(w->cal_nb - 1));
         while ((j = head[b]) >= 0) {
-            head[b] = link[2 * j];
+            head[b] = link[3 * j];
             cc__cal_prefetch(w, head[b]);
-            hpos[j] = -1;
+            hpos[3 * j] = -1;
             w->cal_n--;
             cc__heap_update(w, j, cc__cal_key(w, j));
         }
@@ -225,11 +226,11 @@ void cc__queue_update(cc_world *w, int id, double key)
         cc__heap_update(w, id, key);
         return;
     }
-    if (hpos[id] <= -2)
+    if (hpos[3 * id] <= -2)
         cc__cal_unlink(w, id);
-    else if (hpos[id] >= 0 && !(cc__cal_block(w, key) < (double)(w->cal_cur + 1)))
+    else if (hpos[3 * id] >= 0 && !(cc__cal_block(w, key) < (double)(w->cal_cur + 1)))
         cc__heap_remove(w, id); /* later than the heap's blocks now */
-    if (hpos[id] >= 0)
+    if (hpos[3 * id] >= 0)
         cc__heap_update(w, id, key);
     else
         cc__cal_file(w, id, key);
@@ -237,7 +238,7 @@ void cc__queue_update(cc_world *w, int id, double key)
 
 void cc__queue_remove(cc_world *w, int id)
 {
-    if (CC__ARR(w, int32_t, off_hpos)[id] <= -2)
+    if (CC__ARR(w, int32_t, off_hpos)[id * w->hpos_stride] <= -2)
         cc__cal_unlink(w, id);
     else
         cc__heap_remove(w, id);

@@ -19,18 +19,18 @@ static inline int cc__min4(const cc__heap_entry *heap, int c)
     return cc__before(&heap[b], &heap[a]) ? b : a;
 }
 
-static void cc__sift_up(cc__heap_entry *heap, int32_t *hpos, int k, cc__heap_entry e)
+static void cc__sift_up(cc__heap_entry *heap, int32_t *hpos, int st, int k, cc__heap_entry e)
 {
     while (k > 0) {
         int p = (k - 1) >> 2;
         if (!cc__before(&e, &heap[p]))
             break;
         heap[k] = heap[p];
-        hpos[heap[k].id] = k;
+        hpos[heap[k].id * st] = k;
         k = p;
     }
     heap[k] = e;
-    hpos[e.id] = k;
+    hpos[e.id * st] = k;
 }
 
 /* The children of the four entries at c .. c + 3 are the 16 entries from 4c + 1: asked for
@@ -50,7 +50,7 @@ static inline void cc__prefetch_children(const cc__heap_entry *heap, int c, int 
 #endif
 }
 
-static void cc__sift_down(cc__heap_entry *heap, int32_t *hpos, int n, int k, cc__heap_entry e)
+static void cc__sift_down(cc__heap_entry *heap, int32_t *hpos, int st, int n, int k, cc__heap_entry e)
 {
     for (;;) {
         int c = 4 * k + 1, m = c, q;
@@ -65,11 +65,11 @@ static void cc__sift_down(cc__heap_entry *heap, int32_t *hpos, int n, int k, cc_
         if (!cc__before(&heap[m], &e))
             break;
         heap[k] = heap[m];
-        hpos[heap[k].id] = k;
+        hpos[heap[k].id * st] = k;
         k = m;
     }
     heap[k] = e;
-    hpos[e.id] = k;
+    hpos[e.id * st] = k;
 }
 
 /* Puts entry e at index k, where it may be out of order in either direction. */
@@ -78,22 +78,22 @@ static void cc__place(cc_world *w, int k, cc__heap_entry e)
     cc__heap_entry *heap = CC__ARR(w, cc__heap_entry, off_heap);
     int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
     if (k > 0 && cc__before(&e, &heap[(k - 1) >> 2]))
-        cc__sift_up(heap, hpos, k, e);
+        cc__sift_up(heap, hpos, w->hpos_stride, k, e);
     else
-        cc__sift_down(heap, hpos, w->heap_n, k, e);
+        cc__sift_down(heap, hpos, w->hpos_stride, w->heap_n, k, e);
 }
 
 void cc__heap_update(cc_world *w, int id, double key)
 {
     int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
     cc__heap_entry e;
-    int k = hpos[id];
+    int k = hpos[id * w->hpos_stride];
     e.key = key;
     e.id = id;
     e.pad_ = 0;
     if (k < 0) {
         k = w->heap_n++;
-        cc__sift_up(CC__ARR(w, cc__heap_entry, off_heap), hpos, k, e);
+        cc__sift_up(CC__ARR(w, cc__heap_entry, off_heap), hpos, w->hpos_stride, k, e);
         return;
     }
     cc__place(w, k, e);
@@ -103,10 +103,10 @@ void cc__heap_remove(cc_world *w, int id)
 {
     cc__heap_entry *heap = CC__ARR(w, cc__heap_entry, off_heap);
     int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
-    int k = hpos[id], last;
+    int k = hpos[id * w->hpos_stride], last;
     if (k < 0)
         return;
-    hpos[id] = -1;
+    hpos[id * w->hpos_stride] = -1;
     last = --w->heap_n;
     if (k == last)
         return;

@@ -122,7 +122,7 @@ static void cc__file_all(cc_world *w)
     for (i = 0; i < w->id_end; i++) {
         cc__body *b = &B[i];
         int32_t *head;
-        hpos[i] = -1;
+        hpos[i * w->hpos_stride] = -1;
         if (!(C[i].flags & CC__ALIVE))
             continue;
         if (w->features & CC__F_PERIODIC)
@@ -208,7 +208,7 @@ void cc__rebuild(cc_world *w)
         cc__unoverlap_cells(w);
     } else {
         for (i = 0; i < w->id_end; i++) {
-            hpos[i] = -1;
+            hpos[i * w->hpos_stride] = -1;
             if (!(C[i].flags & CC__ALIVE))
                 continue;
             cc__advance_body(w, &B[i], w->now);

@@ -156,6 +156,12 @@ CC__INLINE_ALWAYS void cc__try_circle_x(const cc_world *w, const cc__body *B, co
     cr = dp.x * dv.y - dp.y * dv.x;
     if (cr * cr > 1.0000001 * dv2 * R * R && dp.x * dp.x + dp.y * dp.y > R * R)
         return;
+    if (best->t < HUGE_VAL) { /* farther than R + |dv| h: no contact within h = best - now, by a
+                                 relative margin of 1e-9 (far more than the solver's rounding) */
+        double s = R + sqrt(dv2) * (best->t - now);
+        if (dp.x * dp.x + dp.y * dp.y > 1.000000001 * (s * s))
+            return;
+    }
     cc__try_close(w, bi, bj, j, dp, dv, now, best);
 }
 

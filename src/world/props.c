@@ -24,7 +24,7 @@ void cc__props_default(const cc_world *w, cc__props *p)
     p->category = 1u;
     p->mask = 0xFFFFFFFFu;
     p->sensor = -1;
-    p->pad_ = 0;
+    p->free_next = -1;
 }
 
 int cc__circles_interact(const cc_world *w, int i, int j)

@@ -124,7 +124,7 @@ void cc__sort_bodies(cc_world *w)
     w->heap_n = 0;
     cc__queue_clear(w);
     for (p = 0; p < n; p++) {
-        hpos[p] = -1;
+        hpos[p * w->hpos_stride] = -1;
         if (C[p].flags & CC__ALIVE) {
             cc__advance_body(w, &B[p], w->now);
             cc__grid_insert(w, p);

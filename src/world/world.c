@@ -145,7 +145,7 @@ static uint32_t cc__slots(const cc_world_def *d)
 static size_t cc__layout(const cc_world_def *d, cc_world *w)
 {
     size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
-    size_t offs[19], sizes[19];
+    size_t offs[17], sizes[17];
     int cal_nb = cc__calendar_buckets(d->mode, d->max_circles);
     int clu_b, clu_c;
     int k;
@@ -153,22 +153,20 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[1] = n * sizeof(cc__event);
     sizes[2] = n * sizeof(cc__cold);
     sizes[3] = n * sizeof(cc__heap_entry); /* heap */
-    sizes[4] = n * sizeof(int32_t); /* heap positions */
-    sizes[5] = n * sizeof(int32_t); /* free ids */
-    sizes[6] = n * sizeof(int32_t); /* touched list */
-    sizes[7] = (size_t)cc__slots(d) * sizeof(int32_t);
-    sizes[8] = (size_t)d->max_segments * sizeof(cc_segment);
-    sizes[9] = n * sizeof(int32_t);  /* id -> index */
-    sizes[10] = n * sizeof(int32_t); /* index -> id */
-    sizes[11] = cc__cluster_block(d->max_circles, d->mode, &clu_b, &clu_c); /* EXACT's clusters */
-    sizes[12] = n * sizeof(cc__props);
-    sizes[13] = (size_t)d->max_segments * sizeof(cc__segment_props);
-    sizes[14] = (size_t)d->max_segments * sizeof(cc__wall_box);        /* the walls' tree */
-    sizes[15] = 2 * (size_t)d->max_segments * sizeof(cc__wall_node);
-    sizes[16] = (size_t)d->max_segments * sizeof(int32_t);
-    sizes[17] = cal_nb > 0 ? ((size_t)cal_nb + 1) * sizeof(int32_t) : 0; /* the calendar's buckets */
-    sizes[18] = cal_nb > 0 ? 2 * n * sizeof(int32_t) : 0;               /* and its links */
-    for (k = 0; k < 19; k++) {
+    sizes[4] = (cal_nb > 0 ? 3 : 1) * n * sizeof(int32_t); /* heap positions (and calendar links) */
+    sizes[5] = n * sizeof(int32_t); /* touched list */
+    sizes[6] = (size_t)cc__slots(d) * sizeof(int32_t);
+    sizes[7] = (size_t)d->max_segments * sizeof(cc_segment);
+    sizes[8] = n * sizeof(int32_t);  /* id -> index */
+    sizes[9] = n * sizeof(int32_t); /* index -> id */
+    sizes[10] = cc__cluster_block(d->max_circles, d->mode, &clu_b, &clu_c); /* EXACT's clusters */
+    sizes[11] = n * sizeof(cc__props);
+    sizes[12] = (size_t)d->max_segments * sizeof(cc__segment_props);
+    sizes[13] = (size_t)d->max_segments * sizeof(cc__wall_box);        /* the walls' tree */
+    sizes[14] = 2 * (size_t)d->max_segments * sizeof(cc__wall_node);
+    sizes[15] = (size_t)d->max_segments * sizeof(int32_t);
+    sizes[16] = cal_nb > 0 ? ((size_t)cal_nb + 1) * sizeof(int32_t) : 0; /* the calendar's buckets */
+    for (k = 0; k < 17; k++) {
         offs[k] = off;
         off += cc__align16(sizes[k]);
     }
@@ -178,20 +176,20 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_cold = offs[2];
         w->off_heap = offs[3];
         w->off_hpos = offs[4];
-        w->off_free = offs[5];
-        w->off_touched = offs[6];
-        w->off_slot = offs[7];
-        w->off_seg = offs[8];
-        w->off_id2idx = offs[9];
-        w->off_idx2id = offs[10];
-        w->off_clu = offs[11];
-        w->off_props = offs[12];
-        w->off_segprops = offs[13];
-        w->off_wallbox = offs[14];
-        w->off_wallnode = offs[15];
-        w->off_wallorder = offs[16];
-        w->off_calhead = offs[17];
-        w->off_callink = offs[18];
+        w->off_touched = offs[5];
+        w->off_slot = offs[6];
+        w->off_seg = offs[7];
+        w->off_id2idx = offs[8];
+        w->off_idx2id = offs[9];
+        w->off_clu = offs[10];
+        w->off_props = offs[11];
+        w->off_segprops = offs[12];
+        w->off_wallbox = offs[13];
+        w->off_wallnode = offs[14];
+        w->off_wallorder = offs[15];
+        w->off_calhead = offs[16];
+        w->off_callink = offs[4] + sizeof(int32_t);
+        w->hpos_stride = cal_nb > 0 ? 3 : 1;
         w->cal_nb = cal_nb;
         w->clu_bodies = clu_b;
         w->clu_contacts = clu_c;
@@ -260,7 +258,7 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
         int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
         int i;
         for (i = 0; i < d.max_circles; i++)
-            hpos[i] = -1;
+            hpos[i * w->hpos_stride] = -1;
         cc__queue_clear(w);
     }
     if (w->use_grid)
@@ -365,8 +363,10 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
         return CC_ERR_INVALID;
     if (w->n_circles >= w->max_circles)
         return CC_ERR_FULL;
-    if (w->free_top > 0) {
-        id = CC__ARR(w, int32_t, off_free)[--w->free_top]; /* it keeps its storage index */
+    if (w->free_top > 0) { /* the last removed id (it keeps its storage index), off the free stack */
+        id = w->free_head;
+        w->free_head = CC__CARR(w, cc__props, off_props)[CC__CARR(w, int32_t, off_id2idx)[id]].free_next;
+        w->free_top--;
     } else {
         id = w->id_end++;
         CC__ARR(w, int32_t, off_id2idx)[id] = id;
@@ -412,7 +412,9 @@ CC_API int cc_world_remove_circle(cc_world *w, int id)
     cc__unfile(w, k);
     cc__sensor_forget(w, k, 1); /* a removed circle's overlaps are forgotten, not reported */
     CC__ARR(w, cc__cold, off_cold)[k].flags = 0;
-    CC__ARR(w, int32_t, off_free)[w->free_top++] = id;
+    CC__ARR(w, cc__props, off_props)[k].free_next = w->free_head; /* onto the free stack */
+    w->free_head = id;
+    w->free_top++;
     w->n_circles--;
     return CC_OK;
 }

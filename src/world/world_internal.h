@@ -41,7 +41,7 @@ typedef struct cc__props {
     uint64_t inside;    /* the sensors (by slot) this circle overlaps now */
     uint32_t category, mask;
     int32_t sensor;     /* its sensor slot, or -1 */
-    int32_t pad_;
+    int32_t free_next;  /* a removed circle: the id removed before it (the free stack, world.c) */
     int32_t wrap[2];    /* periodic axes: how many periods it has crossed (+ along the axis) */
 } cc__props;
 
@@ -128,7 +128,7 @@ struct cc_world {
     int n_circles;    /* live circles */
     int n_segments;
     int id_end;       /* ids in [0, id_end) have been used at least once */
-    int free_top;     /* removed ids waiting for reuse (a stack) */
+    int free_top, free_head; /* removed ids waiting for reuse, the last (a stack through props' free_next) */
     int heap_n;
     int n_touched;    /* bodies on the touched list */
     uint64_t events_at_sort; /* stats.events when storage was last sorted */
@@ -138,7 +138,7 @@ struct cc_world {
     cc_world_stats stats;
 
     /* byte offsets from the header to the arrays */
-    size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_free, off_touched, off_slot, off_seg;
+    size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_touched, off_slot, off_seg;
     size_t off_id2idx, off_idx2id; /* a circle's id <-> its storage index (see sort.c) */
     size_t off_clu;                /* EXACT: the simultaneous-impact cluster (simultaneous.c) */
     size_t off_props, off_segprops; /* per-body properties (props.c) */
@@ -146,8 +146,8 @@ struct cc_world {
     int wall_tree_n;                /* walls in the tree; those after it are looked at one by one */
     int clu_bodies, clu_contacts;  /* its capacities; 0 when the world has none */
     /* EXACT's event calendar in front of the heap (calendar.c); cal_nb = 0: none */
-    size_t off_calhead, off_callink; /* cal_nb + 1 bucket heads (the last: overflow); next, prev */
-    int cal_nb, cal_tuned;           /* buckets (a power of two); whether blocks are in use */
+    size_t off_calhead, off_callink; /* cal_nb + 1 bucket heads (overflow last); next, prev: after hpos */
+    int cal_nb, cal_tuned, hpos_stride; /* buckets (a power of two); blocks in use; hpos[id * stride] */
     int cal_n, cal_over;             /* bodies in the buckets (overflow included), in the overflow */
     int64_t cal_cur;                 /* the heap holds the blocks up to this one */
     double cal_w, cal_inv_w, cal_base; /* block width, its inverse, where block 0 begins */
