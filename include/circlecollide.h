@@ -217,8 +217,8 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * Memory    Everything lives inside [memory, memory + bytes): the world stores no address, not
  *           even into its own block, so a world may be copied (memcpy) to other 8-byte aligned
  *           memory of the same size and used from there. It keeps no pointer to the caller's
- *           defs, circles or segments (it copies them). About 200 bytes per circle (one 64-byte
- *           line of hot state, the predicted event, queue and grid entries, and 40 bytes of
+ *           defs, circles or segments (it copies them). About 225 bytes per circle (one 64-byte
+ *           line of hot state, the predicted event, queue and grid entries, and 56 bytes of
  *           properties that only a world using them reads) plus about 200 per wall (the wall, its
  *           properties and its place in the walls' tree);
  *           EXACT adds one block of at most 15 KB for simultaneous impacts (see below).
