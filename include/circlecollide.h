@@ -177,11 +177,20 @@ CC_API cc_vec2 cc_closest_point_on_segment(cc_vec2 p, const cc_segment *s);
  * (normal a -> b, point at distance ra from a's centre at time t, depth 0) and untouched-output
  * rules. A hit is the earliest t in [0, t_max] at which the distance equals ra + rb while it
  * decreases: two circles that come to rest exactly touching do not hit (when their motion ends
- * within the rounding of the lengths of a touch, the rest positions decide). When neither circle
+ * within the rounding of the lengths of a touch, the rest positions decide). "Decreases" means
+ * an approach speed > 0 at that instant, as for cc_sweep's "touching at t = 0 and approaching":
+ * a second-order touch, touching at t = 0 with approach speed 0 while the distance falls at once
+ * (equal velocities along the normal, the circle in front decelerating more: a push, as after an
+ * impact at restitution 0), is no hit, for cc_respond has no approach to reverse there (it
+ * returns CC_MISS); the pair overlaps from then on, and the answer is the first later instant at
+ * which, parted again, it comes back to ra + rb approaching (else CC_MISS). A caller that steps
+ * such pairs needs a least approach or a push-apart, as the world does (see "Pushing" below).
+ * Touching and closing at any speed > 0, however small, is a hit at t = 0. When neither circle
  * rolls (both decels 0, or at rest), the answer is cc_sweep's, bit for bit. While both move, the
- * distance is a quartic in t: its roots are isolated through its derivatives and refined on their
- * brackets (safeguarded Newton) to the point bisection to the last bit gives, each piece of motion
- * (between stops) evaluated in the relative frame. */
+ * distance is a quartic in t: outside the times at which each circle is within R of the other's
+ * path there is no contact (most misses end there); inside, its roots are isolated through its
+ * derivatives and refined on their brackets (safeguarded Newton) to the point bisection to the
+ * last bit gives, each piece of motion (between stops) evaluated in the relative frame. */
 CC_API int cc_sweep_rolling(const cc_circle *a, double decel_a, const cc_circle *b, double decel_b, double t_max,
                             cc_contact *out);
 
@@ -495,8 +504,9 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  *         isolated and bisected to the last bit); a circle comes to rest at its exact stop time
  *         and costs nothing from then on until something hits it. Two circles that come to rest
  *         exactly touching do not collide. Pairs of which neither decelerates cost what they
- *         cost without friction; a decelerating pair costs 10 to 30 times a straight one
- *         (docs/BENCHMARKS.md, bench_world features).
+ *         cost without friction; a decelerating pair costs about 9 times a straight one, and a
+ *         world in which every circle rolls 4 to 7 times one without friction per collision
+ *         (docs/BENCHMARKS.md: bench_pair_rolling, bench_world features).
  * SWEPT, DISCRETE  Move and sweep along the same paths, at the end of each step as before.
  * Pushing  1.1 has no carried contacts: a circle pushed by one that decelerates less along their
  *         normal (a kinematic circle driving into a rolling one, a circle with less friction

@@ -8,6 +8,10 @@ foreach(_t sweep sweep_segment detect respond segment invalid properties)
 endforeach()
 # rolling to rest: double and float twins in one suite (the brute force compares against long double)
 cc_add_test(NAME test_rolling SOURCES test_rolling.c LABELS core TIMEOUT 300)
+# a touch without approach (fuzz_pair's R1) and its neighbours, in both precisions
+cc_add_test(NAME test_rolling_touch SOURCES test_rolling_touch.c LABELS core TIMEOUT 60)
+cc_add_test(NAME test_rolling_touch_float SOURCES test_rolling_touch.c LABELS core TIMEOUT 60)
+target_compile_definitions(test_rolling_touch_float PRIVATE TEST_FLOAT)
 # the version is what the loaded library says: check it against the shared one
 cc_add_test(NAME test_version SOURCES test_version.c LABELS core SHARED)
 

@@ -418,10 +418,15 @@ static int roll_scan(roll *r, double tlim_d)
                     hit = 1;
                 }
             } else if (su == 0 && sw < 0) {
-                /* from a touch into overlap (after a tie): the contact is at the touch */
+                /* from a touch into overlap: at t = 0 (cc_sweep over [0, 0] found no approach) a
+                 * second-order touch, no hit by the contract (approach speed 0: the pair is
+                 * pushed into overlap), the scan goes on for a later crossing after parting;
+                 * later (after a tie) the contact is at the touch */
                 r->degenerate = 1;
-                mpfr_set(RV(r, TSTAR), parts[q], MPFR_RNDN);
-                hit = 1;
+                if (k > 0 || q > 0) {
+                    mpfr_set(RV(r, TSTAR), parts[q], MPFR_RNDN);
+                    hit = 1;
+                }
             }
         }
         if (!hit && k + 2 == nc)
