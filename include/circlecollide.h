@@ -276,7 +276,7 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           tests/fuzz/world_defects/). The world time is one double: a circle that crosses
  *           a grid cell in less than one rounding step of it (speed * ulp(time) > cell size,
  *           e.g. speed 20 with cells of 1 at time 1e15) may be filed ahead of its position and
- *           a grid query may miss it (D18); restart the clock (a new world) long before. Queries compare scaled squares and hold at any size; a
+ *           a grid query may miss it (D18, D20); restart the clock (a new world) long before. Queries compare scaled squares and hold at any size; a
  *           step that would carry a circle past 2^1017 is refused (cc_world_step). Masses may
  *           be any the contract allows (up to DBL_MAX): velocities after impacts are computed
  *           from mass ratios and stay finite, but an impulse beyond DBL_MAX (a circle of mass

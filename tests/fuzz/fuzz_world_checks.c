@@ -163,6 +163,8 @@ typedef struct model {
     int dead;     /* the input stops here (D7; a jam, below) */
     int capped;   /* steps that ended at CC_EVENT_LIMIT */
     int op, huge; /* huge: a live circle's coordinate or velocity is beyond 1e150 (D7) */
+    int fast;     /* a live circle crosses a cell within one ulp of the world time (D18, D20) */
+    double rmin;  /* the smallest radius ever placed: the world's cells are at least its diameter */
     double placing; /* the mass of the circle an add or set call places (0 otherwise) */
     double call_t0;
     int ncb;
@@ -578,6 +580,9 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  *     image (one shift) no longer reaches it, and query_circle missed it (D7's class, speeds
  *     beyond the header's Range; world_defects/d18-*): while a coordinate or velocity is beyond
  *     1e150 in a periodic world, queries are not checked against brute force;
+ * D20 D18's cause at ordinary scale (a speed of 1e21 at world time 9: 2e6 per ulp of the time,
+ *     cells of 2.3): once a circle crosses a cell within one ulp of the world time it may be filed
+ *     ahead of its position (the header's Range), and queries are not checked from then on;
  * D16 fixed: a circle moving slower than 1 given rolling_decel DBL_MAX got a NaN velocity (2k
  *     overflowed in the rolling motion's g'); D17 fixed: a circle of mass 1e308 in a cluster
  *     struck by a kinematic one got an Inf velocity and the contact a NaN point (the cluster
@@ -642,6 +647,8 @@ static int place_ub(model *m, const cc_circle *c)
     if (circle_valid(c) && !(fabs(c->pos.x) + fabs(c->pos.y) + fabs(c->vel.x) + fabs(c->vel.y) + c->radius < 1e150))
         m->huge = 1; /* D14: the call itself may give a contact a NaN point (D7's class) */
 #endif
+    if (circle_valid(c) && c->radius < m->rmin)
+        m->rmin = c->radius;
     return circle_valid(c) && ((m->period[0] > 0.0 && far_on_axis(m, 0, c->pos.x)) ||
                                (m->period[1] > 0.0 && far_on_axis(m, 1, c->pos.y)));
 }
@@ -1003,6 +1010,8 @@ static void do_query(model *m, reader *r, int box, const snap *s)
             sure_in = sure_out = 0; /* D11 */
         if (m->huge && (m->period[0] > 0.0 || m->period[1] > 0.0))
             sure_in = sure_out = 0; /* D18: at speeds beyond 1e150 stored positions leave the period */
+        if (m->fast)
+            sure_in = sure_out = 0; /* D20: the header's Range: filed ahead of its position */
 #endif
         in_out = 0;
         listed = 0;
@@ -1121,11 +1130,20 @@ static int one_call(model *m, reader *r, int op)
     fuzz_world_counted.calls++;
     {
         int i;
+        double vmax = 0.0, tick = nextafter(fabs(m->time), INFINITY) - fabs(m->time);
         m->huge = 0;
-        for (i = 0; i < before.n; i++)
+        for (i = 0; i < before.n; i++) {
             if (!(fabs(before.c[i].pos.x) + fabs(before.c[i].pos.y) + fabs(before.c[i].vel.x) + fabs(before.c[i].vel.y) +
                       before.c[i].radius < 1e150)) /* (the radius too: D12, D14) */
                 m->huge = 1;
+            vmax = fmax(vmax, fabs(before.c[i].vel.x) + fabs(before.c[i].vel.y));
+        }
+        /* D18, D20 (the header's Range): a circle that crosses a cell (at least the smallest
+         * diameter ever placed, or def.cell_size) within one ulp of the world time may be filed
+         * ahead of its position; the flag stays for the rest of the input once set, because the
+         * filing catches up only at the circle's next crossings */
+        if (!(vmax * tick * 16.0 < fmax(2.0 * m->rmin, m->cell_size)))
+            m->fast = 1;
     }
     if (getenv("FUZZ_WORLD_TRACE")) {
         int i;
@@ -1375,6 +1393,7 @@ void fuzz_world_one(const uint8_t *data, size_t size)
 
     m->maxc = def.max_circles, m->maxs = def.max_segments, m->mode = def.mode;
     m->restitution = def.restitution, m->rest_speed = def.rest_speed, m->cell_size = def.cell_size;
+    m->rmin = INFINITY, m->fast = 0;
     m->max_events = def.max_events;
     m->has_contact_cb = def.on_contact != NULL;
     if (!old_size) {
