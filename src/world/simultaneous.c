@@ -137,9 +137,10 @@ static int cc__clu_scale(cc__clu *c)
         if (!isinf(m) && m > mmax)
             mmax = m;
     }
-    if (!(mmax > 0x1p500 || mmax < 0x1p-500))
+    if (!(mmax > 0x1p500 || mmax < 0x1p-500) || mmax == 0.0) /* (0: no finite mass) */
         return 0;
-    s = ilogb(mmax);
+    (void)frexp(mmax, &s); /* mmax in [2^(s-1), 2^s): frexp, not ilogb, which the embedded */
+    s -= 1;                /* and WebAssembly builds do not link (scripts/test.d/40-embedded.sh) */
     for (i = 0; i < c->nb; i++) {
         double m = C[c->id[i]].m;
         c->body[i].inv_mass = isinf(m) ? 0.0 : 1.0 / ldexp(m, -s);
