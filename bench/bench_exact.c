@@ -63,14 +63,7 @@ typedef struct world_box {
 
 static void step(cc_world *w, double dt) { bench_step(w, dt, "bench_exact"); }
 
-static cc_world_stats stats_of(const cc_world *w)
-{
-    cc_world_stats st;
-    memset(&st, 0, sizeof st);
-    st.struct_size = sizeof st;
-    cc_world_get_stats(w, &st);
-    return st;
-}
+static cc_world_stats stats_of(const cc_world *w) { return bench_stats(w); }
 
 /* n disks of diameter 1 in a periodic square box at area fraction phi, on a square lattice with
  * velocities uniform in [-0.5, 0.5) per component (bench_world's disks scene, any n). */

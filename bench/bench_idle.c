@@ -16,28 +16,15 @@
  * table gives the median over rounds with its spread (min - max). Prints `figure` lines. */
 #include "bench_util.h"
 
+#include "bench_scenes.h"
 #include "circlecollide.h"
 
 enum { EMPTY, REST, MOVING, N_VARIANTS };
 static const char *names[N_VARIANTS] = {"empty world", "N circles at rest", "N circles moving slowly (few events)"};
 
-static uint64_t events(const cc_world *w)
-{
-    cc_world_stats st;
-    memset(&st, 0, sizeof st);
-    st.struct_size = sizeof st;
-    cc_world_get_stats(w, &st);
-    return st.events;
-}
+static uint64_t events(const cc_world *w) { return bench_stats(w).events; }
 
-static void step(cc_world *w, double dt)
-{
-    int r = cc_world_step(w, dt);
-    if (r != CC_OK) {
-        fprintf(stderr, "bench_idle: cc_world_step: %s\n", cc_result_string(r));
-        exit(1);
-    }
-}
+static void step(cc_world *w, double dt) { bench_step(w, dt, "bench_idle"); }
 
 /* ns per step of variant v with n circles; *ev = events per step */
 static double time_variant(int v, int n, double min_time, double *ev)

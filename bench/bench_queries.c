@@ -45,13 +45,7 @@ static void make_gas(qworld *q, const bench_scene *s, int extra_walls, int round
 
 static void free_gas(qworld *q) { free(q->mem); }
 
-static uint64_t collisions(const cc_world *w)
-{
-    cc_world_stats st;
-    st.struct_size = sizeof st;
-    cc_world_get_stats(w, &st);
-    return st.collisions;
-}
+static uint64_t collisions(const cc_world *w) { return bench_stats(w).collisions; }
 
 /* ns per cast of a ray and of a circle of radius 1 over 20 circle radii, and per disc query of
  * radius 3, from random points of the gas; each a median over rounds. */

@@ -188,6 +188,15 @@ void bench_scene_disks(bench_scene *s, int n, double phi, uint64_t seed, double 
     *side = l;
 }
 
+cc_world_stats bench_stats(const cc_world *w)
+{
+    cc_world_stats st;
+    memset(&st, 0, sizeof st);
+    st.struct_size = sizeof st;
+    cc_world_get_stats(w, &st);
+    return st;
+}
+
 void bench_step(cc_world *w, double dt, const char *who)
 {
     int r = cc_world_step(w, dt);

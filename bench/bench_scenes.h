@@ -40,6 +40,9 @@ void bench_scene_disks(bench_scene *s, int n, double phi, uint64_t seed, double 
  * the program with `who` in the message. */
 void bench_step(cc_world *w, double dt, const char *who);
 
+/* The world's counters (cc_world_get_stats with struct_size set). */
+cc_world_stats bench_stats(const cc_world *w);
+
 /* Kinetic energy of the movable circles. */
 double bench_energy(const cc_circle *c, int n);
 

@@ -59,14 +59,7 @@ static void world_free(world_box *b) { free(b->mem); }
 
 static void step(cc_world *w, double dt) { bench_step(w, dt, "bench_world"); }
 
-static uint64_t collisions(const cc_world *w)
-{
-    cc_world_stats st;
-    memset(&st, 0, sizeof st);
-    st.struct_size = sizeof st;
-    cc_world_get_stats(w, &st);
-    return st.collisions;
-}
+static uint64_t collisions(const cc_world *w) { return bench_stats(w).collisions; }
 
 /* ---- one configuration of the matrix ------------------------------------------------------ */
 
@@ -253,10 +246,7 @@ static double exact_rate(int n, double phi, int reps, uint64_t min_coll, double 
         rate[k] = (double)(collisions(b.w) - c0) / spent;
         *bytes = b.bytes;
         if (k == 0 && g_verbose) {
-            cc_world_stats st;
-            memset(&st, 0, sizeof st);
-            st.struct_size = sizeof st;
-            cc_world_get_stats(b.w, &st);
+            cc_world_stats st = bench_stats(b.w);
             printf("  n=%d: per collision %.2f events, %.2f stale, %.2f pair tests, %.2f cell crossings\n", n,
                    (double)st.events / st.collisions, (double)st.stale_events / st.collisions,
                    (double)st.pairs_tested / st.collisions, (double)st.cell_crossings / st.collisions);
