@@ -315,31 +315,40 @@ static void check_contact(const cc_contact_event *e, void *user)
         g_max_impulse = e->impulse;
 }
 
+/* A kinematic circle at (-2.5, 0) moving at 1 strikes one of mass `heavy` at the origin at
+ * t = 1, which touches one of mass `light` at (2, 0) (light = 0: none); contacts go to
+ * check_contact. */
+static cc_world *struck_world(tw_mem *m, double heavy, double light)
+{
+    cc_world_def d;
+    cc_world *w;
+    cc_circle k = {{-2.5, 0.0}, {1.0, 0.0}, 0.5, INFINITY};
+    cc_circle h = {{0.0, 0.0}, {0.0, 0.0}, 1.0, heavy};
+    cc_circle l = {{2.0, 0.0}, {0.0, 0.0}, 1.0, light};
+    cc_world_def_init(&d);
+    d.max_circles = 4;
+    d.on_contact = check_contact;
+    w = tw_make(m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &k));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &h));
+    if (light > 0.0)
+        TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &l));
+    g_bad_points = 0;
+    g_max_impulse = 0.0;
+    return w;
+}
+
 static void test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velocities(void)
 {
     int light, scaled;
     for (light = 0; light < 2; light++) {
         cc_circle got[2][3];
         for (scaled = 0; scaled < 2; scaled++) {
-            cc_world_def d;
             tw_mem m;
-            cc_world *w;
             double heavy = scaled ? 1e308 * 0x1p-1000 : 1e308, lm = scaled ? 0x1p-1000 : 1.0;
-            cc_circle k = {{-2.5, 0.0}, {1.0, 0.0}, 0.5, INFINITY};
-            cc_circle h = {{0.0, 0.0}, {0.0, 0.0}, 1.0, heavy};
-            cc_circle l = {{2.0, 0.0}, {0.0, 0.0}, 1.0, lm};
+            cc_world *w = struck_world(&m, heavy, light ? lm : 0.0);
             int i, n = light ? 3 : 2;
-            cc_world_def_init(&d);
-            d.max_circles = 4;
-            d.on_contact = check_contact;
-            w = tw_make(&m, &d, 0);
-            TEST_ASSERT_NOT_NULL(w);
-            TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &k));
-            TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &h));
-            if (light)
-                TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &l));
-            g_bad_points = 0;
-            g_max_impulse = 0.0;
             TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.5)); /* the impact at t = 1 */
             TEST_ASSERT_EQUAL_INT(0, g_bad_points); /* the point was (NaN, NaN) */
             for (i = 0; i < n; i++) {
@@ -364,20 +373,9 @@ static void test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velo
             TEST_ASSERT_EQUAL_DOUBLE(got[1][2].vel.x, got[0][2].vel.x);
     }
     {   /* masses 1e308 and 1e-300, 2^2020 apart: no common unit, the pair functions resolve it */
-        cc_world_def d;
         tw_mem m;
-        cc_world *w;
-        cc_circle k = {{-2.5, 0.0}, {1.0, 0.0}, 0.5, INFINITY}, h = {{0.0, 0.0}, {0.0, 0.0}, 1.0, 1e308};
-        cc_circle l = {{2.0, 0.0}, {0.0, 0.0}, 1.0, 1e-300}, o;
-        cc_world_def_init(&d);
-        d.max_circles = 4;
-        d.on_contact = check_contact;
-        w = tw_make(&m, &d, 0);
-        TEST_ASSERT_NOT_NULL(w);
-        TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &k));
-        TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &h));
-        TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &l));
-        g_bad_points = 0;
+        cc_world *w = struck_world(&m, 1e308, 1e-300);
+        cc_circle o;
         TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.5));
         TEST_ASSERT_EQUAL_INT(0, g_bad_points);
         TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 1, &o));
