@@ -163,7 +163,9 @@ static void test_loose_bounds_leave_the_decision_to_the_pass(void)
             fid = cc_world_add_circle(w, &far);
             TEST_ASSERT_EQUAL_INT(2, fid);
             TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_remove_circle(w, fid));
-            TEST_ASSERT_TRUE(w->speed >= 0x1p600 && w->reach >= 0x1.9p1016); /* loose */
+            /* loose (a periodic world keeps the far circle's image within the period from the
+             * moment it is put: only its speed bound is loose there) */
+            TEST_ASSERT_TRUE(w->speed >= 0x1p600 && (per || w->reach >= 0x1.9p1016));
             /* 2^600 * 2^500 is Inf (in periodic SWEPT, 2^600 * 1 passes half a period) */
             dt = mode == CC_MODE_SWEPT && per ? 1.0 : 0x1p500;
             TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, dt));

@@ -92,14 +92,6 @@ static void cc__query_visit(void *ctx, int j, double sx, double sy)
         return;
     cc__body_pos(w, j, w->now, &x, &y);
     if (w->features & CC__F_PERIODIC) { /* the image nearest the query (each circle once) */
-        /* from where get_circle puts it, within the period: a circle added or set outside it
-         * stays there until it is filed (SWEPT and DISCRETE: the next step), and the one shift
-         * below missed it from two periods out (world fuzzer D19) */
-        int32_t turns;
-        if (w->period[0] > 0.0 && !(x >= 0.0 && x < w->period[0]))
-            x = cc__wrap_coord(w, x, 0, &turns);
-        if (w->period[1] > 0.0 && !(y >= 0.0 && y < w->period[1]))
-            y = cc__wrap_coord(w, y, 1, &turns);
         x += cc__near_shift(w, 0.5 * (q->x0 + q->x1), x, 0);
         y += cc__near_shift(w, 0.5 * (q->y0 + q->y1), y, 1);
     }

@@ -318,6 +318,8 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
     b->t = w->now;
     b->r = c->radius;
     b->count++;
+    if (w->features & CC__F_PERIODIC) /* its image within the period (the turns counted), so that */
+        cc__wrap_body(w, id);         /* queries and casts see it there before it is filed (D19) */
     cc__reach_note(w, b);
     k->m = c->mass;
     k->flags = CC__ALIVE;
