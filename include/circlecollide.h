@@ -288,7 +288,9 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           overlapping a wall is pushed out along the wall's normal. Before the first step,
  *           and after a wall or a circle wider than the cells was added, this happens for all
  *           circles at the next step instead (which also rebuilds the grid). One pass is
- *           made; an overlap it leaves (chains of circles) heals as described above.
+ *           made; an overlap it leaves (chains of circles) heals as described above (an
+ *           approaching pair is an impact, a separating one drifts apart; two circles left
+ *           overlapping at equal velocities stay so until something changes one of them).
  *           SWEPT does this at the start of each step, DISCRETE at the end.
  * Collapse  With restitution < 1 a group of bodies can collide infinitely often in a finite
  *           time (inelastic collapse), and bodies pressed together would exchange ever smaller

@@ -406,6 +406,24 @@ static double overlap_tol(const cc_circle *a, const cc_circle *b, double t)
 
 /* deepest overlap (beyond the tolerance) between interacting movable non-sensor circles and
  * between such circles and walls; 0 when none */
+/* Whether circle a, shifted by -1, 0 or +1 period along each periodic axis, meets wall s. */
+static int wall_meets_image(const model *m, const cc_circle *a, const cc_segment *s)
+{
+    int u, v;
+    for (u = -1; u <= 1; u++)
+        for (v = -1; v <= 1; v++) {
+            cc_vec2 c = a->pos, q;
+            if ((u != 0 && !(m->period[0] > 0.0)) || (v != 0 && !(m->period[1] > 0.0)))
+                continue;
+            c.x += u * m->period[0];
+            c.y += v * m->period[1];
+            q = cc_closest_point_on_segment(c, s);
+            if (hypot(q.x - c.x, q.y - c.y) < a->radius)
+                return 1;
+        }
+    return 0;
+}
+
 static int overlaps(const model *m, const snap *s, const char **what)
 {
     int i, j, k;
@@ -439,8 +457,16 @@ static int overlaps(const model *m, const snap *s, const char **what)
             double d;
             if (!filters_meet(s->p[i].category, s->p[i].mask, m->segprops[k].category, m->segprops[k].mask))
                 continue;
-            if (m->period[0] > 0.0 || m->period[1] > 0.0)
-                continue; /* walls are not repeated: leave the images alone */
+            if (m->period[0] > 0.0 || m->period[1] > 0.0) {
+                /* walls are not repeated: after a step leave the images alone; before it (g_fixed),
+                 * a circle that any image of meets a wall makes the world unclean, since the step's
+                 * push-out may move it into a circle it touches (D22, a false alarm without this) */
+                if (g_fixed && wall_meets_image(m, a, &m->segs[k])) {
+                    *what = "a circle (an image of it) overlaps a wall before the step";
+                    return 1;
+                }
+                continue;
+            }
             q = cc_closest_point_on_segment(a->pos, &m->segs[k]);
             d = hypot(q.x - a->pos.x, q.y - a->pos.y);
             if (a->radius - d > overlap_tol(a, a, m->time) + 1e-9 * (fabs(q.x) + fabs(q.y))) {
@@ -884,6 +910,9 @@ static void do_segprops(model *m, reader *r, int set)
         valid = want.restitution >= 0.0 && want.restitution <= 1.0;
         m->op = OP_SET_SEGPROPS;
         rc = cc_world_set_segment_props(m->w, id, &u.p);
+        if (getenv("FUZZ_WORLD_TRACE"))
+            fprintf(stderr, "set_segment_props %d size %u: restitution %.17g category %x mask %x: %d\n", id,
+                    (unsigned)n, u.p.restitution, (unsigned)u.p.category, (unsigned)u.p.mask, rc);
         if (!ok)
             REQUIRE(m, rc == CC_ERR_NOT_FOUND || ((n < 16 || !valid) && (rc == CC_ERR_VERSION || rc == CC_ERR_INVALID)),
                     "set_segment_props: a missing wall not NOT_FOUND");
@@ -1255,6 +1284,8 @@ static int one_call(model *m, reader *r, int op)
         s.a.x = value(r, K_POS), s.a.y = value(r, K_POS);
         s.b.x = byte(r) & 1u ? s.a.x : value(r, K_POS), s.b.y = value(r, K_POS);
         rc = cc_world_add_segment(m->w, &s);
+        if (getenv("FUZZ_WORLD_TRACE"))
+            fprintf(stderr, "add_segment (%.17g, %.17g) (%.17g, %.17g): %d\n", s.a.x, s.a.y, s.b.x, s.b.y, rc);
         if (!(isfinite(s.a.x) && isfinite(s.a.y) && isfinite(s.b.x) && isfinite(s.b.y)))
             REQUIRE(m, rc == CC_ERR_INVALID, "add_segment: an invalid wall not INVALID");
         else if (m->nsegs == m->maxs)
