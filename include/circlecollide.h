@@ -506,7 +506,7 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  *         isolated and bisected to the last bit); a circle comes to rest at its exact stop time
  *         and costs nothing from then on until something hits it. Two circles that come to rest
  *         exactly touching do not collide. Pairs of which neither decelerates cost what they
- *         cost without friction; a decelerating pair costs about 9 times a straight one, and a
+ *         cost without friction; a decelerating pair costs about 6.5 times a straight one, and a
  *         world in which every circle rolls 4 to 7 times one without friction per collision
  *         (docs/BENCHMARKS.md: bench_pair_rolling, bench_world features).
  * SWEPT, DISCRETE  Move and sweep along the same paths, at the end of each step as before.

@@ -193,6 +193,17 @@ static void test_ball_and_wall(void)
     c.pos.x = 5 - 1e-9;
     TEST_ASSERT_EQUAL_INT(CC_MISS, cc_sweep_segment_rolling(&c, 1.0, &s, 100, &k));
     TEST_ASSERT_EQUAL_MEMORY(&before, &k, sizeof k);
+    /* touching an end point now and rolling into it: the wall from (1, 0) to (2, 0) along the
+     * motion (no interior contact), the circle of radius 1 at the origin with v (1, 0): its
+     * distance to (1, 0) is exactly R at t = 0 and falls, so the contact is now, t = 0, normal
+     * (1, 0), point (1, 0) (the solver's "touching now" answer: f(0) = 0, f'(0) < 0) */
+    s.a.x = 1, s.a.y = 0, s.b.x = 2, s.b.y = 0;
+    c = circle(0, 0, 1, 0, 1, 1);
+    k = before;
+    TEST_ASSERT_EQUAL_INT(CC_HIT, cc_sweep_segment_rolling(&c, 0.5, &s, 10, &k));
+    TEST_ASSERT_EQUAL_DOUBLE(0.0, k.t);
+    EXPECT_VEC_NEAR(0, 1, 0, k.normal);
+    EXPECT_VEC_NEAR(0, 1, 0, k.point);
 }
 
 /* A random circle for the random tests: positions in a box of side 10 * L (shifted by up to
