@@ -5,6 +5,7 @@
  * the pool break and the air-hockey rally; the world's bytes per circle.
  *
  * Usage: bench_exact [--quick] [--max-n N] [--rounds R] [--only disks|scaling|scenes|d3|d7|gas|big]
+ *                    [--cell S] [--phi F] (F: the area fraction of the one world of --only d3, d7, big)
  *
  * Each figure is the median over rounds of the per-round ratio (a round measures cc_sweep, then
  * each world, so that a noisy neighbour hurts numerator and denominator alike); min and max of
@@ -18,6 +19,7 @@
 
 static volatile double g_sink;
 static double g_cell = 0.0; /* --cell: def.cell_size of the disks' worlds (0: the world's choice) */
+static double g_phi = 0.0; /* --phi: the area fraction of --only d3, d7, big (0: theirs) */
 
 /* This process's CPU seconds: on a machine shared with other jobs, the time this process ran
  * (its memory stalls included), not the time it waited for a core. Both sides of each ratio are
@@ -240,10 +242,12 @@ int main(int argc, char **argv)
             rounds = atoi(argv[++k]);
         else if (!strcmp(argv[k], "--cell") && k + 1 < argc)
             g_cell = atof(argv[++k]);
+        else if (!strcmp(argv[k], "--phi") && k + 1 < argc)
+            g_phi = atof(argv[++k]);
         else if (!strcmp(argv[k], "--only") && k + 1 < argc)
             only = argv[++k];
         else {
-            fprintf(stderr, "usage: bench_exact [--quick] [--max-n N] [--rounds R] [--only disks|scaling|scenes|d3|d7|gas|big] [--cell S]\n");
+            fprintf(stderr, "usage: bench_exact [--quick] [--max-n N] [--rounds R] [--only disks|scaling|scenes|d3|d7|gas|big] [--cell S] [--phi F]\n");
             return 2;
         }
     }
@@ -264,8 +268,8 @@ int main(int argc, char **argv)
     if (only != NULL && (!strcmp(only, "d3") || !strcmp(only, "d7") || !strcmp(only, "gas") || !strcmp(only, "big"))) {
         /* one world, once, for a profiler: perf stat / perf record bench_exact --only d3 */
         per_coll r = !strcmp(only, "gas")  ? gas_run(10000, 0.3, 20.0)
-                     : !strcmp(only, "big") ? disks_run(max_n, 0.3, 2.0, 199)
-                                            : disks_run(10000, !strcmp(only, "d3") ? 0.3 : 0.7, 20.0, 99);
+                     : !strcmp(only, "big") ? disks_run(max_n, g_phi > 0.0 ? g_phi : 0.3, 2.0, 199)
+                                            : disks_run(10000, g_phi > 0.0 ? g_phi : !strcmp(only, "d3") ? 0.3 : 0.7, 20.0, 99);
         print_counts(only, &r);
         printf("  state hash at the end: %016llx\n", (unsigned long long)r.hash);
         return 0;

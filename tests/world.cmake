@@ -15,6 +15,7 @@ cc_add_test(NAME test_world_fuzz_defects SOURCES test_world_fuzz_defects.c LABEL
 cc_add_test(NAME test_world_step SOURCES test_world_step.c LABELS world)
 cc_add_test(NAME test_world_def_compat SOURCES test_world_def_compat.c LABELS world)
 cc_add_test(NAME test_world_calendar SOURCES test_world_calendar.c LABELS world)
+cc_add_test(NAME test_world_gas_scans SOURCES test_world_gas_scans.c LABELS world)
 cc_add_test(NAME test_world_soak SOURCES test_world_soak.c LABELS world TIMEOUT 300)
 # The world against the plain reference simulator (issue 11): 4,000 random scenes against the
 # reference and 800 all-pairs against grid (about 2 min optimised: a third of the scenes roll,
