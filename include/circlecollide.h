@@ -492,8 +492,11 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  * wall should span the period (a channel's sides, reaching a radius beyond both ends) or keep
  * away from its edges. A periodic world always has a grid, also with max_circles <= 32. SWEPT
  * and DISCRETE take the nearest image of each pair: a step must not carry a circle half a
- * period (SWEPT refuses such a step: CC_ERR_INVALID, nothing changes). Casts see every image along their path; queries report each circle once (its image
- * nearest the query). */
+ * period (SWEPT refuses such a step: CC_ERR_INVALID, nothing changes). Casts see every image
+ * along their path; queries report each circle once (its image nearest the query; a query box
+ * as wide as the period holds every coordinate along it). Beyond about 1e15 periods from the
+ * origin a coordinate has lost its place within the period: a cast from there looks at every
+ * circle's nearest image and may hit or miss, at the cost of one look at each. */
 
 /* Rolling to rest (1.1): a movable circle with a deceleration a > 0 (def.rolling_decel, or its
  * own cc_circle_props.rolling_decel) slows along its direction of motion and stops: moving at

@@ -423,6 +423,52 @@ static void test_a_circle_put_periods_out_is_found_by_the_queries(void)
         }
 }
 
+/* D23: a cast in a periodic world (period 24.02 along x) from x = -6.7e127 took 17 s: beyond a
+ * million million periods the logical cell of a coordinate is clamped, and the box's two ends
+ * came out reversed (the high end's cell below the low end's), so the visit walked 2^31 empty
+ * rows of cells. Now a region reaching that far visits every circle (the phase within the period
+ * is lost there: a cast from such an x may hit or miss, and answers at once; its time is what
+ * CI's fuzz step, with a 30 s limit per input, checks on corpus_world/d23-*). And query_box took
+ * a circle's image with one shift of a period (D6's class): a box a million million periods out
+ * found nothing. Now the box is taken to its image within the period first, and one as wide as
+ * the period holds every coordinate along it: a box from -7e127 to -6.7e127 (1e126 periods)
+ * finds every circle whose y meets it, as one 1e10 wide at 3e20 does. */
+static void test_a_periodic_box_a_million_million_periods_out_finds_every_circle(void)
+{
+    static const double far[][2] = {{-7e127, -6.7e127}, {-6.6990447725850315e+127, -6.6990447476291456e+127},
+                                    {6.7e127, 7e127}, {-1e300, -9e299}, {3e20, 3.0000000001e20}};
+    int mode, k, i, rc;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++) {
+        cc_world_def d;
+        tw_mem m;
+        cc_world *w;
+        int ids[32];
+        cc_world_def_init(&d);
+        d.mode = mode;
+        d.max_circles = 32;
+        d.period.x = 24.024896265560166;
+        w = tw_make(&m, &d, 0);
+        TEST_ASSERT_NOT_NULL(w);
+        for (i = 0; i < 24; i++) { /* a row across the period at y = 0, one more at y = 10 */
+            cc_circle c = {{i * 1.001 + 0.5, i < 20 ? 0.0 : 10.0}, {0.0, 0.0}, 0.5, 1.0};
+            TEST_ASSERT_EQUAL_INT(i, cc_world_add_circle(w, &c));
+        }
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.25)); /* filed in the grid */
+        for (k = 0; k < (int)(sizeof far / sizeof far[0]); k++) {
+            cc_vec2 lo, hi, p, dir;
+            cc_cast_hit hit;
+            lo.x = far[k][0], lo.y = -0.25, hi.x = far[k][1], hi.y = 0.25;
+            TEST_ASSERT_EQUAL_INT(20, cc_world_query_box(w, lo, hi, ~0u, ids, 32));
+            p.x = far[k][0], p.y = -5.0, dir.x = 0.0, dir.y = 10.0;
+            rc = cc_world_cast_circle(w, p, 0.6, dir, ~0u, &hit);
+            TEST_ASSERT_TRUE(rc == CC_HIT || rc == CC_MISS);
+            if (rc == CC_HIT)
+                TEST_ASSERT_TRUE(hit.circle >= 0 && hit.circle < 20);
+        }
+        tw_free(&m);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -435,5 +481,6 @@ int main(void)
     RUN_TEST(test_the_largest_deceleration_stops_a_slow_circle_at_once);
     RUN_TEST(test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velocities);
     RUN_TEST(test_a_circle_put_periods_out_is_found_by_the_queries);
+    RUN_TEST(test_a_periodic_box_a_million_million_periods_out_finds_every_circle);
     return UNITY_END();
 }

@@ -11,6 +11,7 @@ typedef struct cc__query {
     double cx, cy, r;         /* a disc, or (box) */
     double x0, y0, x1, y1;    /* a box */
     int box;
+    int full[2];              /* periodic axis k that the box spans a whole period of: every coordinate */
     uint32_t mask;
     int *ids, capacity, count;
 } cc__query;
@@ -97,8 +98,8 @@ static void cc__query_visit(void *ctx, int j, double sx, double sy)
     }
     if (q->box) {
         /* the centre's distance from the closed box, against the (closed) disc */
-        dx = x < q->x0 ? q->x0 - x : x > q->x1 ? x - q->x1 : 0.0;
-        dy = y < q->y0 ? q->y0 - y : y > q->y1 ? y - q->y1 : 0.0;
+        dx = q->full[0] ? 0.0 : x < q->x0 ? q->x0 - x : x > q->x1 ? x - q->x1 : 0.0;
+        dy = q->full[1] ? 0.0 : y < q->y0 ? q->y0 - y : y > q->y1 ? y - q->y1 : 0.0;
         if (dx > b->r || dy > b->r || cc__cmp_dist(dx, dy, b->r) > 0)
             return;
     } else {
@@ -161,6 +162,26 @@ CC_API int cc_world_query_box(const cc_world *w, cc_vec2 lo, cc_vec2 hi, uint32_
     q.y0 = lo.y;
     q.x1 = hi.x;
     q.y1 = hi.y;
+    {   /* along a periodic axis the box is taken to its image whose low side lies in [0, period),
+         * as query_circle's centre (the circles' nearest images are looked for within half a
+         * period of its centre); one as wide as the period holds every coordinate (world fuzzer
+         * D6 for boxes, D23) */
+        double *lo_k[2], *hi_k[2];
+        int k;
+        lo_k[0] = &q.x0, lo_k[1] = &q.y0, hi_k[0] = &q.x1, hi_k[1] = &q.y1;
+        for (k = 0; k < 2; k++)
+            if (w->period[k] > 0.0) {
+                double width = *hi_k[k] - *lo_k[k];
+                int32_t turns;
+                if (!(width < w->period[k])) {
+                    q.full[k] = 1;
+                    *lo_k[k] = 0.0, *hi_k[k] = w->period[k];
+                } else {
+                    *lo_k[k] = cc__wrap_coord(w, *lo_k[k], k, &turns);
+                    *hi_k[k] = *lo_k[k] + width;
+                }
+            }
+    }
     q.mask = mask;
     q.ids = ids;
     q.capacity = capacity;

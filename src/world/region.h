@@ -34,9 +34,14 @@ static inline void cc__visit_region_periodic(const cc_world *w, double x0, doubl
     const int32_t *slot = CC__CARR(w, int32_t, off_slot);
     int64_t lo[2], hi[2], x, y;
     double lox[2] = {x0, y0}, hix[2] = {x1, y1};
-    int k, j;
+    int k, j, far = 0;
     for (k = 0; k < 2; k++) {
         if (w->ncell[k] > 0) {
+            /* a box reaching past the clamp of cc__logical_cell (a million million periods) has
+             * lost the phase within the period: every circle (below), never a cell range that
+             * the clamp left reversed (world fuzzer D23: a cast at x = -6.7e127 walked 2^31
+             * empty rows of cells, 17 s) */
+            far |= !(fabs(lox[k]) < 1e15 * w->period[k] && fabs(hix[k]) < 1e15 * w->period[k]);
             lo[k] = cc__logical_cell(w, lox[k], k) - 1;
             hi[k] = cc__logical_cell(w, hix[k], k) + 1;
             if (!images && hi[k] - lo[k] + 1 >= w->ncell[k])
@@ -46,7 +51,8 @@ static inline void cc__visit_region_periodic(const cc_world *w, double x0, doubl
             hi[k] = cc__cell_of(w, hix[k]) + 1;
         }
     }
-    if (((double)hi[0] - (double)lo[0] + 1.0) * ((double)hi[1] - (double)lo[1] + 1.0) > 4.0 * (double)w->id_end + 9.0) {
+    if (far || hi[0] < lo[0] || hi[1] < lo[1] ||
+        ((double)hi[0] - (double)lo[0] + 1.0) * ((double)hi[1] - (double)lo[1] + 1.0) > 4.0 * (double)w->id_end + 9.0) {
         /* more cells than circles: each circle, once (its nearest image to the box's centre) */
         const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
         double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);

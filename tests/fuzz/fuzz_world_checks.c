@@ -1086,6 +1086,9 @@ static void do_cast(model *m, reader *r, const snap *s)
     rad = byte(r) & 1u ? value(r, K_RAD) : 0.0;
     memset(&out, (int)UNTOUCHED, sizeof out);
     keep = out;
+    if (getenv("FUZZ_WORLD_TRACE"))
+        fprintf(stderr, "cast p (%.17g, %.17g) radius %.17g d (%.17g, %.17g) mask %x\n", p.x, p.y, rad, d.x, d.y,
+                (unsigned)mask);
     rc = cc_world_cast_circle(m->w, p, rad, d, mask, &out);
     if (!isfinite(p.x) || !isfinite(p.y) || !isfinite(d.x) || !isfinite(d.y) || !isfinite(rad) || rad < 0.0) {
         REQUIRE(m, rc == CC_ERR_INVALID, "cast: invalid arguments not INVALID");
