@@ -469,6 +469,41 @@ static void test_a_periodic_box_a_million_million_periods_out_finds_every_circle
     }
 }
 
+/* D24: with many cells in a period (a period of 1.3e6 and cells about 1 wide: 1.2e6 of them), a
+ * cast or box query 1e14 periods out counted its logical cell as periods x cells in int64_t,
+ * 1.2e20: a signed overflow (undefined; UBSan stops this test in the sanitized build without the
+ * fix). The logical cells now count at most 2^52 / cells periods either way; a box beyond is
+ * looked at circle by circle. */
+static void test_a_periodic_query_far_out_with_many_cells_is_defined(void)
+{
+    static const double xs[] = {1.3e20, -1.3e20, 4e15, -4e15, 5e9 * 1.3e6};
+    cc_world_def d;
+    tw_mem m;
+    cc_world *w;
+    int ids[4], k, rc;
+    cc_circle c = {{10.0, 0.0}, {1.0, 0.0}, 0.5, 1.0};
+    cc_world_def_init(&d);
+    d.max_circles = 4;
+    d.period.x = 1.3e6;
+    w = tw_make(&m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.5));
+    for (k = 0; k < (int)(sizeof xs / sizeof xs[0]); k++) {
+        cc_vec2 p, dir, lo, hi;
+        cc_cast_hit hit;
+        p.x = xs[k], p.y = 0.0, dir.x = 100.0, dir.y = 0.0;
+        rc = cc_world_cast_circle(w, p, 0.25, dir, ~0u, &hit);
+        TEST_ASSERT_TRUE(rc == CC_HIT || rc == CC_MISS || rc == CC_OVERLAP);
+        lo.x = xs[k], lo.y = -1.0, hi.x = xs[k] + 100.0, hi.y = 1.0;
+        rc = cc_world_query_box(w, lo, hi, ~0u, ids, 4);
+        TEST_ASSERT_TRUE(rc == 0 || rc == 1);
+        lo.x = xs[k] - 2e6, hi.x = xs[k] + 2e6; /* wider than the period: the circle */
+        TEST_ASSERT_EQUAL_INT(1, cc_world_query_box(w, lo, hi, ~0u, ids, 4));
+    }
+    tw_free(&m);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -482,5 +517,6 @@ int main(void)
     RUN_TEST(test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velocities);
     RUN_TEST(test_a_circle_put_periods_out_is_found_by_the_queries);
     RUN_TEST(test_a_periodic_box_a_million_million_periods_out_finds_every_circle);
+    RUN_TEST(test_a_periodic_query_far_out_with_many_cells_is_defined);
     return UNITY_END();
 }

@@ -11,12 +11,21 @@ typedef void (*cc__region_visit)(void *ctx, int j, double sx, double sy);
 
 /* The logical cell (numbered on through the periods, see cc__cell_image) of coordinate x along
  * periodic axis k. */
+/* How many periods either way a logical cell counts: at most a million million, and few enough
+ * that periods x cells stay far inside int64_t (2^52; up to 2^30 cells a period: world fuzzer
+ * D24, 1e15 x 1.3e6 overflowed). A box reaching beyond is not walked by cells (below). */
+static inline double cc__logical_reach(const cc_world *w, int k)
+{
+    double q = floor(0x1p52 / (double)w->ncell[k]);
+    return q < 1e15 ? q : 1e15;
+}
+
 static inline int64_t cc__logical_cell(const cc_world *w, double x, int k)
 {
-    double P = w->period[k], q = floor(x / P), c = floor((x - q * P) * w->inv_cs);
+    double P = w->period[k], q = floor(x / P), c = floor((x - q * P) * w->inv_cs), qm = cc__logical_reach(w, k);
     int64_t n = w->ncell[k];
-    if (!(q > -1e15 && q < 1e15))
-        q = q < 0.0 ? -1e15 : 1e15; /* a box across a million million periods is clamped */
+    if (!(q > -qm && q < qm))
+        q = q < 0.0 ? -qm : qm; /* a box across that many periods is clamped */
     /* x = +-Inf (a cast whose path p + d overflows: world fuzzer D15) gives q = +-Inf and c = NaN,
      * whose conversion was undefined: the end of the clamped range of periods */
     c = !(c >= 0.0) ? (q < 0.0 ? 0.0 : (double)(n - 1)) : c >= (double)n ? (double)(n - 1) : c;
@@ -35,13 +44,16 @@ static inline void cc__visit_region_periodic(const cc_world *w, double x0, doubl
     int64_t lo[2], hi[2], x, y;
     double lox[2] = {x0, y0}, hix[2] = {x1, y1};
     int k, j, far = 0;
-    for (k = 0; k < 2; k++) {
+    /* a box reaching past the clamp of cc__logical_cell has lost the phase within the period:
+     * every circle (below), never a cell range that the clamp left reversed (world fuzzer D23: a
+     * cast at x = -6.7e127 walked 2^31 empty rows of cells, 17 s) */
+    for (k = 0; k < 2; k++)
         if (w->ncell[k] > 0) {
-            /* a box reaching past the clamp of cc__logical_cell (a million million periods) has
-             * lost the phase within the period: every circle (below), never a cell range that
-             * the clamp left reversed (world fuzzer D23: a cast at x = -6.7e127 walked 2^31
-             * empty rows of cells, 17 s) */
-            far |= !(fabs(lox[k]) < 1e15 * w->period[k] && fabs(hix[k]) < 1e15 * w->period[k]);
+            double reach = cc__logical_reach(w, k) * w->period[k];
+            far |= !(fabs(lox[k]) < reach && fabs(hix[k]) < reach);
+        }
+    for (k = 0; k < 2 && !far; k++) {
+        if (w->ncell[k] > 0) {
             lo[k] = cc__logical_cell(w, lox[k], k) - 1;
             hi[k] = cc__logical_cell(w, hix[k], k) + 1;
             if (!images && hi[k] - lo[k] + 1 >= w->ncell[k])
@@ -51,7 +63,7 @@ static inline void cc__visit_region_periodic(const cc_world *w, double x0, doubl
             hi[k] = cc__cell_of(w, hix[k]) + 1;
         }
     }
-    if (far || hi[0] < lo[0] || hi[1] < lo[1] ||
+    if (far || hi[0] < lo[0] || hi[1] < lo[1] || /* (far: lo and hi are not set; || stops there) */
         ((double)hi[0] - (double)lo[0] + 1.0) * ((double)hi[1] - (double)lo[1] + 1.0) > 4.0 * (double)w->id_end + 9.0) {
         /* more cells than circles: each circle, once (its nearest image to the box's centre) */
         const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
