@@ -112,6 +112,29 @@ static void cc__query_visit(void *ctx, int j, double sx, double sy)
     cc__keep(q, CC__CARR(w, int32_t, off_idx2id)[j]);
 }
 
+/* Along a periodic axis the query (a disc's centre: lo = hi; or a box) is taken to its image
+ * whose low side lies in [0, period), so that the circles' nearest images are looked for within
+ * half a period of it (world fuzzer D6); a box as wide as the period holds every coordinate
+ * along it (D23). */
+static void cc__query_to_period(cc__query *q)
+{
+    double *lo[2], *hi[2];
+    int k;
+    lo[0] = &q->x0, lo[1] = &q->y0, hi[0] = &q->x1, hi[1] = &q->y1;
+    for (k = 0; k < 2; k++)
+        if (q->w->period[k] > 0.0) {
+            double width = *hi[k] - *lo[k];
+            int32_t turns;
+            if (!(width < q->w->period[k])) {
+                q->full[k] = 1;
+                *lo[k] = 0.0, *hi[k] = q->w->period[k];
+            } else {
+                *lo[k] = cc__wrap_coord(q->w, *lo[k], k, &turns);
+                *hi[k] = *lo[k] + width;
+            }
+        }
+}
+
 static int cc__query_run(cc__query *q)
 {
     double g = q->box ? 0.0 : q->r;
@@ -130,18 +153,13 @@ CC_API int cc_world_query_circle(const cc_world *w, cc_vec2 c, double radius, ui
     cc__query q;
     if (!cc__query_ok(w, ids, capacity) || !isfinite(c.x) || !isfinite(c.y) || !(radius >= 0.0) || !isfinite(radius))
         return CC_ERR_INVALID;
-    {   /* a centre outside the period is taken to its image first (the nearest images of the
-         * circles are looked for within half a period of it) */
-        int32_t turns;
-        if (w->period[0] > 0.0)
-            c.x = cc__wrap_coord(w, c.x, 0, &turns);
-        if (w->period[1] > 0.0)
-            c.y = cc__wrap_coord(w, c.y, 1, &turns);
-    }
     memset(&q, 0, sizeof q);
     q.w = w;
-    q.cx = q.x0 = q.x1 = c.x;
-    q.cy = q.y0 = q.y1 = c.y;
+    q.x0 = q.x1 = c.x;
+    q.y0 = q.y1 = c.y;
+    cc__query_to_period(&q);
+    q.cx = q.x0;
+    q.cy = q.y0;
     q.r = radius;
     q.mask = mask;
     q.ids = ids;
@@ -162,26 +180,7 @@ CC_API int cc_world_query_box(const cc_world *w, cc_vec2 lo, cc_vec2 hi, uint32_
     q.y0 = lo.y;
     q.x1 = hi.x;
     q.y1 = hi.y;
-    {   /* along a periodic axis the box is taken to its image whose low side lies in [0, period),
-         * as query_circle's centre (the circles' nearest images are looked for within half a
-         * period of its centre); one as wide as the period holds every coordinate (world fuzzer
-         * D6 for boxes, D23) */
-        double *lo_k[2], *hi_k[2];
-        int k;
-        lo_k[0] = &q.x0, lo_k[1] = &q.y0, hi_k[0] = &q.x1, hi_k[1] = &q.y1;
-        for (k = 0; k < 2; k++)
-            if (w->period[k] > 0.0) {
-                double width = *hi_k[k] - *lo_k[k];
-                int32_t turns;
-                if (!(width < w->period[k])) {
-                    q.full[k] = 1;
-                    *lo_k[k] = 0.0, *hi_k[k] = w->period[k];
-                } else {
-                    *lo_k[k] = cc__wrap_coord(w, *lo_k[k], k, &turns);
-                    *hi_k[k] = *lo_k[k] + width;
-                }
-            }
-    }
+    cc__query_to_period(&q);
     q.mask = mask;
     q.ids = ids;
     q.capacity = capacity;
