@@ -386,6 +386,22 @@ static void test_a_kinematic_circle_striking_one_of_mass_1e308_gives_finite_velo
     }
 }
 
+
+/* The period of the fuzz inputs D19 and D23 along x (y open), and a world of that shape. */
+#define PERIOD_X 24.024896265560166
+static cc_world *periodic_x_world(tw_mem *m, int mode, int max_circles)
+{
+    cc_world_def d;
+    cc_world *w;
+    cc_world_def_init(&d);
+    d.mode = mode;
+    d.max_circles = max_circles;
+    d.period.x = PERIOD_X;
+    w = tw_make(m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    return w;
+}
+
 /* D19: in a periodic world (period 24.0249 along x) a circle added at x = 100, four periods out,
  * is kept there until it is filed: at the next step in SWEPT and DISCRETE (and in EXACT before
  * the first step). get_circle reports it at its image 3.90, but the queries took the nearest
@@ -397,22 +413,15 @@ static void test_a_circle_put_periods_out_is_found_by_the_queries(void)
     int mode, side, step;
     for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
         for (side = 0; side < 2; side++) {
-            cc_world_def d;
             tw_mem m;
-            cc_world *w;
+            cc_world *w = periodic_x_world(&m, mode, 8);
             cc_circle c = {{side ? -100.0 : 100.0, -2.2821576763485476}, {0.0, 0.0}, 1.5, INFINITY}, o;
             cc_vec2 lo, hi, q;
             int ids[4];
-            cc_world_def_init(&d);
-            d.mode = mode;
-            d.max_circles = 8;
-            d.period.x = 24.024896265560166;
-            w = tw_make(&m, &d, 0);
-            TEST_ASSERT_NOT_NULL(w);
             TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
             for (step = 0; step < 2; step++) {
                 TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, 0, &o));
-                TEST_ASSERT_TRUE(o.pos.x >= 0.0 && o.pos.x < d.period.x);
+                TEST_ASSERT_TRUE(o.pos.x >= 0.0 && o.pos.x < PERIOD_X);
                 lo.x = o.pos.x + 0.7, lo.y = o.pos.y - 0.3, hi.x = lo.x + 0.66, hi.y = o.pos.y + 0.3;
                 TEST_ASSERT_EQUAL_INT(1, cc_world_query_box(w, lo, hi, ~0u, ids, 4));
                 q.x = o.pos.x - 1.0, q.y = o.pos.y;
@@ -439,16 +448,9 @@ static void test_a_periodic_box_a_million_million_periods_out_finds_every_circle
                                     {6.7e127, 7e127}, {-1e300, -9e299}, {3e20, 3.0000000001e20}};
     int mode, k, i, rc;
     for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++) {
-        cc_world_def d;
         tw_mem m;
-        cc_world *w;
+        cc_world *w = periodic_x_world(&m, mode, 32);
         int ids[32];
-        cc_world_def_init(&d);
-        d.mode = mode;
-        d.max_circles = 32;
-        d.period.x = 24.024896265560166;
-        w = tw_make(&m, &d, 0);
-        TEST_ASSERT_NOT_NULL(w);
         for (i = 0; i < 24; i++) { /* a row across the period at y = 0, one more at y = 10 */
             cc_circle c = {{i * 1.001 + 0.5, i < 20 ? 0.0 : 10.0}, {0.0, 0.0}, 0.5, 1.0};
             TEST_ASSERT_EQUAL_INT(i, cc_world_add_circle(w, &c));
