@@ -258,6 +258,26 @@ static void test_overlap_normal_tiny_offset_huge_radii(void)
     TEST_ASSERT_EQUAL_MEMORY(&d, &k, sizeof k);
 }
 
+#ifdef TEST_FLOAT
+#define SMALLEST_SUBNORMAL 0x1p-149
+#else
+#define SMALLEST_SUBNORMAL 0x1p-1074
+#endif
+
+/* Overlap by less than the smallest subnormal: radii 16128 m and m, centres (16128, 128) m apart
+ * (m the smallest subnormal), distance 16128.508 m against R = 16129 m: the solver, scaled up,
+ * sees the overlap, but the depth R - d taken at the inputs' scale rounded to 0 (fuzz_pair, seed
+ * 4848, in float; the contract says depth > 0 on an overlap). It is now the smallest subnormal,
+ * as cc_sweep_segment_rolling's was made before. */
+static void test_overlap_below_the_smallest_subnormal_has_depth(void)
+{
+    double m = SMALLEST_SUBNORMAL;
+    Circle a = circle(0, 0, 1, 0, 16128 * m, 1), b = circle(16128 * m, 128 * m, -1, 0, m, 1);
+    Contact k = sentinel_contact();
+    TEST_ASSERT_EQUAL_INT(CC_OVERLAP, F(cc_sweep)(&a, &b, 1, &k));
+    TEST_ASSERT_TRUE(k.depth > 0 && k.depth <= m);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -280,5 +300,6 @@ int main(void)
     RUN_TEST(test_different_radii);
     RUN_TEST(test_grazing_few_ulps_inside);
     RUN_TEST(test_overlap_normal_tiny_offset_huge_radii);
+    RUN_TEST(test_overlap_below_the_smallest_subnormal_has_depth);
     return UNITY_END();
 }
