@@ -506,6 +506,39 @@ static void test_a_periodic_query_far_out_with_many_cells_is_defined(void)
     tw_free(&m);
 }
 
+/* D25: a circle put with its centre the smallest subnormal (4.9e-324) from a wall's line, inside
+ * its reach: the push-out's normal was the offset times 1 / dist, which overflowed to inf, and
+ * the circle went to (inf, NaN) (EXACT, a world with walls, present since 1.0). The scene is
+ * the fuzz input's wall and circle (d25-subnormal-wall-distance). */
+static void test_a_circle_a_subnormal_away_from_a_wall_is_pushed_out_finitely(void)
+{
+    static const int modes[] = {CC_MODE_EXACT, CC_MODE_SWEPT, CC_MODE_DISCRETE};
+    int k;
+    for (k = 0; k < 3; k++) {
+        cc_world_def d;
+        tw_mem m;
+        cc_world *w;
+        cc_segment s = {{0.0, -3.1120331950207465}, {0.0, -6.7634854771784232}};
+        cc_circle c = {{4.9406564584124654e-324, -3.7759336099585061}, {-2.0954356846473026, -3.2157676348547719},
+                       1.3273858921161825, 2.2593360995850622},
+                  got;
+        int id;
+        cc_world_def_init(&d);
+        d.mode = modes[k];
+        d.max_circles = 4;
+        d.max_segments = 2;
+        w = tw_make(&m, &d, 0);
+        TEST_ASSERT_NOT_NULL(w);
+        TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &s));
+        id = cc_world_add_circle(w, &c);
+        TEST_ASSERT_EQUAL_INT(0, id);
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.01));
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, id, &got));
+        TEST_ASSERT_TRUE(isfinite(got.pos.x) && isfinite(got.pos.y) && isfinite(got.vel.x) && isfinite(got.vel.y));
+        TEST_ASSERT_TRUE(fabs(got.pos.x) >= c.radius * (1.0 - 1e-9)); /* out of the wall, on one side */
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -520,5 +553,6 @@ int main(void)
     RUN_TEST(test_a_circle_put_periods_out_is_found_by_the_queries);
     RUN_TEST(test_a_periodic_box_a_million_million_periods_out_finds_every_circle);
     RUN_TEST(test_a_periodic_query_far_out_with_many_cells_is_defined);
+    RUN_TEST(test_a_circle_a_subnormal_away_from_a_wall_is_pushed_out_finitely);
     return UNITY_END();
 }

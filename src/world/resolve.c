@@ -62,8 +62,10 @@ cc_contact cc__world_wall_contact(const cc_circle *c, const cc_segment *s)
     cc_vec2 d = cc__sub(q, c->pos);
     double dist = cc__length(d);
     k.t = 0.0;
-    if (dist > 0.0)
+    if (dist > 0x1p-1000) /* (1 / dist finite, and d's parts normal enough for a unit vector) */
         k.normal = cc__scale(d, 1.0 / dist);
+    else if (dist > 0.0) /* a centre a subnormal away from the wall: 1 / dist overflowed to */
+        k.normal = cc__unit(d); /* inf, the push-out to (inf, NaN) (world fuzzer D25) */
     else
         k.normal = cc__unit(cc__v(s->a.y - s->b.y, s->b.x - s->a.x));
     k.depth = c->radius - dist;
