@@ -188,9 +188,13 @@ CC_API cc_vec2 cc_closest_point_on_segment(cc_vec2 p, const cc_segment *s);
  * Touching and closing at any speed > 0, however small, is a hit at t = 0. When neither circle
  * rolls (both decels 0, or at rest), the answer is cc_sweep's, bit for bit. While both move, the
  * distance is a quartic in t: outside the times at which each circle is within R of the other's
- * path there is no contact (most misses end there); inside, its roots are isolated through its
- * derivatives and refined on their brackets (safeguarded Newton) to the point bisection to the
- * last bit gives, each piece of motion (between stops) evaluated in the relative frame. */
+ * path there is no contact (most misses end there); inside, each piece of motion (between
+ * stops) is stepped toward its first crossing by steps that skip no root (the distance's
+ * curvature is bounded there), to the first t at which the distance as computed is <= ra + rb;
+ * where they cannot settle it (a graze), its roots are isolated through its derivatives and
+ * refined on their brackets (safeguarded Newton) to the point bisection to the last bit gives,
+ * all evaluated in the relative frame. With one circle at rest the offset moves along a line:
+ * cc_sweep's solver in the mover's path parameter, taken back to t. */
 CC_API int cc_sweep_rolling(const cc_circle *a, double decel_a, const cc_circle *b, double decel_b, double t_max,
                             cc_contact *out);
 
@@ -506,11 +510,12 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  * runs exactly as without friction.
  * EXACT   Impacts between decelerating circles (and with walls) are found exactly on those
  *         paths (the distance is a quartic in t between the stop times: its first falling root,
- *         isolated and bisected to the last bit); a circle comes to rest at its exact stop time
+ *         approached by steps that skip no root, or isolated and bisected to the last bit where
+ *         they cannot settle it); a circle comes to rest at its exact stop time
  *         and costs nothing from then on until something hits it. Two circles that come to rest
  *         exactly touching do not collide. Pairs of which neither decelerates cost what they
- *         cost without friction; a decelerating pair costs about 6.5 times a straight one, and a
- *         world in which every circle rolls 4 to 7 times one without friction per collision
+ *         cost without friction; a decelerating pair costs about 4 times a straight one, and a
+ *         world in which every circle rolls about 3.5 times one without friction per collision
  *         (docs/BENCHMARKS.md: bench_pair_rolling, bench_world features).
  * SWEPT, DISCRETE  Move and sweep along the same paths, at the end of each step as before.
  * Pushing  1.1 has no carried contacts: a circle pushed by one that decelerates less along their
