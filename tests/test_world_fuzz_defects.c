@@ -536,6 +536,7 @@ static void test_a_circle_a_subnormal_away_from_a_wall_is_pushed_out_finitely(vo
         TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, id, &got));
         TEST_ASSERT_TRUE(isfinite(got.pos.x) && isfinite(got.pos.y) && isfinite(got.vel.x) && isfinite(got.vel.y));
         TEST_ASSERT_TRUE(fabs(got.pos.x) >= c.radius * (1.0 - 1e-9)); /* out of the wall, on one side */
+        tw_free(&m);
     }
 }
 
