@@ -9,8 +9,6 @@
 /* j: a circle's storage index; (sx, sy): the shift of its image in a periodic world. */
 typedef void (*cc__region_visit)(void *ctx, int j, double sx, double sy);
 
-/* The logical cell (numbered on through the periods, see cc__cell_image) of coordinate x along
- * periodic axis k. */
 /* How many periods either way a logical cell counts: at most a million million, and few enough
  * that periods x cells stay far inside int64_t (2^52; up to 2^30 cells a period: world fuzzer
  * D24, 1e15 x 1.3e6 overflowed). A box reaching beyond is not walked by cells (below). */
@@ -20,6 +18,8 @@ static inline double cc__logical_reach(const cc_world *w, int k)
     return q < 1e15 ? q : 1e15;
 }
 
+/* The logical cell (numbered on through the periods, see cc__cell_image) of coordinate x along
+ * periodic axis k. */
 static inline int64_t cc__logical_cell(const cc_world *w, double x, int k)
 {
     double P = w->period[k], q = floor(x / P), c = floor((x - q * P) * w->inv_cs), qm = cc__logical_reach(w, k);
