@@ -137,6 +137,30 @@ static void test_head_on_both_rolling(void)
     }
 }
 
+/* Crossing paths, the contact on the edge of the first bound's windows (cc__across_apart): a
+ * from (-1.5, 0) at (2, 0) with decel 1 (k = 1/4), b from (0, -2.75) at (0, 2) with decel 0.5
+ * (k = 1/8), radii 0.5 (R = 1). x_a = -1.5 + 2t - t^2/2, y_b = -2.75 + 2t - t^2/4: at t = 1 a
+ * is at (0, 0), b at (0, -1): touching, b closing at 1.5 (a's velocity is across the normal).
+ * b enters a's strip |y| <= R at that same instant, so t = 1 is the lower end of b's time
+ * window: with t_max = 1 the bound must not part them (b's window taken to time with a's k, or
+ * rounded the wrong way without margins, does). Swapped, the same contact. */
+static void test_crossing_paths_touch_at_a_window_edge(void)
+{
+    cc_circle a = circle(-1.5, 0, 2, 0, 0.5, 1), b = circle(0, -2.75, 0, 2, 0.5, 1);
+    expect_hit(&a, 1.0, &b, 0.5, HUGE_VAL, 1, 0, -1, 0, -0.5, 1e-15);
+    expect_hit(&a, 1.0, &b, 0.5, 1.0, 1, 0, -1, 0, -0.5, 1e-15);
+    expect_hit(&b, 0.5, &a, 1.0, 1.0, 1, 0, 1, 0, -0.5, 1e-15);
+    expect_miss(&a, 1.0, &b, 0.5, 0.999);
+    { /* the float twin: the same exact numbers */
+        cc_circlef fa = {{-1.5f, 0}, {2, 0}, 0.5f, 1}, fb = {{0, -2.75f}, {0, 2}, 0.5f, 1};
+        cc_contactf fk;
+        TEST_ASSERT_EQUAL_INT(CC_HIT, cc_sweep_rollingf(&fa, 1.0f, &fb, 0.5f, 1.0f, &fk));
+        TEST_ASSERT_FLOAT_WITHIN(8 * FLT_EPSILON, 1.0f, fk.t);
+        TEST_ASSERT_EQUAL_INT(CC_HIT, cc_sweep_rollingf(&fb, 0.5f, &fa, 1.0f, 1.0f, &fk));
+        TEST_ASSERT_FLOAT_WITHIN(8 * FLT_EPSILON, 1.0f, fk.t);
+    }
+}
+
 /* A ball against a wall from (0,0) to (10,0).
  * Straight at it: centre (5, 2), r 0.5, v (0, -2), decel 1: k = 1/4, y = 2 - 2(t - t^2/4);
  * y = 0.5 at t^2 - 4t + 3 = 0, t = 1; point (5, 0), normal (0, -1). With decel 2 it stops
@@ -681,6 +705,7 @@ int main(void)
     RUN_TEST(test_ball_into_resting_ball);
     RUN_TEST(test_stop_short_exact_long);
     RUN_TEST(test_head_on_both_rolling);
+    RUN_TEST(test_crossing_paths_touch_at_a_window_edge);
     RUN_TEST(test_ball_and_wall);
     RUN_TEST(test_decel_zero_is_cc_sweep);
     RUN_TEST(test_invalid_inputs);
