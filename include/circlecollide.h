@@ -186,9 +186,12 @@ CC_API cc_vec2 cc_closest_point_on_segment(cc_vec2 p, const cc_segment *s);
  * which, parted again, it comes back to ra + rb approaching (else CC_MISS). A caller that steps
  * such pairs needs a least approach or a push-apart, as the world does (see "Pushing" below).
  * Touching and closing at any speed > 0, however small, is a hit at t = 0. When neither circle
- * rolls (both decels 0, or at rest), the answer is cc_sweep's, bit for bit. While both move, the
- * distance is a quartic in t: outside the times at which each circle is within R of the other's
- * path there is no contact (most misses end there); inside, each piece of motion (between
+ * rolls (both decels 0, or at rest), the answer is cc_sweep's, bit for bit. Most misses end at a
+ * first bound, before any set-up: each circle moves along a straight path, and a pair whose
+ * paths never come within R of each other's line, or come near it only at different times,
+ * cannot touch (cross products, one division, g's inverse; bounds rounded outward). While both
+ * move, the distance is a quartic in t: outside the times at which each circle is within R of
+ * the other's path there is no contact; inside, each piece of motion (between
  * stops) is stepped toward its first crossing by steps that skip no root (the distance's
  * curvature is bounded there), to the first t at which the distance as computed is <= ra + rb;
  * where they cannot settle it (a graze), its roots are isolated through its derivatives and
@@ -514,7 +517,7 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  *         they cannot settle it); a circle comes to rest at its exact stop time
  *         and costs nothing from then on until something hits it. Two circles that come to rest
  *         exactly touching do not collide. Pairs of which neither decelerates cost what they
- *         cost without friction; a decelerating pair costs about 4 times a straight one, and a
+ *         cost without friction; a decelerating pair costs about 3.6 times a straight one, and a
  *         world in which every circle rolls about 3.5 times one without friction per collision
  *         (docs/BENCHMARKS.md: bench_pair_rolling, bench_world features).
  * SWEPT, DISCRETE  Move and sweep along the same paths, at the end of each step as before.
