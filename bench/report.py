@@ -111,7 +111,7 @@ def main():
     idle = rows(os.path.join(res, "idle.csv"))
     figs = {}
     for name in ("pair.txt", "headline.txt", "features.txt", "idle.txt", "scaling.txt", "matrix.txt", "casts.txt",
-                 "walls.txt", "exact.txt"):
+                 "walls.txt", "exact.txt", "rolling.txt"):
         figs.update(figures(read(os.path.join(res, name))))
     peers = peers_table(read(os.path.join(res, "peers.txt")))
     if matrix:
@@ -170,6 +170,9 @@ def main():
         target("tunnelling + escapes in EXACT (all scenes, steps)", str(exact_tunnel), "0", exact_tunnel == 0)
     if bil_ratio is not None:
         target("collisions/s, ours / billiards (N = 1000)", g(bil_ratio), ">= 1000", bil_ratio >= 1000)
+    if "rolling_pair_over_sweep" in figs:  # issue 12's target (section 8: it moves with the machine's state)
+        v = figs["rolling_pair_over_sweep"]
+        target("`rolling_pair_over_sweep` (cc_sweep_rolling time / cc_sweep time, pool pairs)", g(v), "<= 3", v <= 3)
     w("")
 
     # ---- pair
@@ -372,6 +375,11 @@ def main():
         w("\n".join(l for l in rolling.splitlines() if not l.startswith("figure ") and not l.startswith("csv ")))
         w("```")
         w("")
+        # the hand-kept account of issue 12's changes (bench/rolling_notes.md), after the measured block
+        rnotes = read(os.path.join(os.path.dirname(os.path.abspath(__file__)), "rolling_notes.md"))
+        if rnotes:
+            w(rnotes.rstrip())
+            w("")
 
     # ---- issue 16 (bench_exact): the measured run, then the hand-kept account (bench/exact_notes.md)
     exact = read(os.path.join(res, "exact.txt"))
