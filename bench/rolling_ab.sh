@@ -8,8 +8,10 @@
 #   bench/rolling_ab.sh BUILD_A BUILD_B POOL [ROUNDS [ANSWERS CLASS]]
 # POOL, ROUNDS, ANSWERS and CLASS as for bench/rolling_cputime.sh (the pairs loaded by
 # bench/rolling_pool.h, as there). Prints each one's CPU ns per pair and the per-round ratios
-# A / cc_sweep, B / cc_sweep and B / A: medians (min - max). Swap A and B in a second run: a
-# layout effect of the order then shows.
+# A / cc_sweep, B / cc_sweep and B / A: medians (min - max), then B's two ratios over the rounds
+# in which cc_sweep ran within 15 % of its fastest and over the others (the machine's two
+# states; bench/rolling_pool.h). Swap A and B in a second run: a layout effect of the order then
+# shows.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build_a=$1 build_b=$2 pool=$3 rounds=${4:-15} answers=${5:-} class=${6:-all}
@@ -37,7 +39,7 @@ int main(int argc, char **argv) /* POOL ROUNDS [ANSWERS CLASS] */
 {
     int rounds = atoi(argv[2]), r, m;
     long n = pool_load(argv[1], argc > 4 ? argv[3] : NULL, argc > 4 ? argv[4] : NULL), i, z, reps;
-    double ns[3][99], ra[99], rb[99], rba[99];
+    double ns[3][99], ra[99], rb[99], rba[99], rb2[99], rba2[99], sw[99];
     fn F[3] = {A_cc_sweep_rolling, B_cc_sweep_rolling, sweep};
     volatile double acc = 0.0;
     if (n < 1 || rounds < 1 || rounds > 99)
@@ -57,6 +59,7 @@ int main(int argc, char **argv) /* POOL ROUNDS [ANSWERS CLASS] */
             ns[w][r] = (pool_cpu() - t0) / (double)(n * reps) * 1e9;
         }
         ra[r] = ns[0][r] / ns[2][r], rb[r] = ns[1][r] / ns[2][r], rba[r] = ns[1][r] / ns[0][r];
+        rb2[r] = rb[r], rba2[r] = rba[r], sw[r] = ns[2][r];
     }
     printf("%ld pairs, %d rounds of %ld calls each; CPU ns per pair: median (min - max)\n", n, rounds, n * reps);
     pool_show("A cc_sweep_rolling", ns[0], rounds);
@@ -65,6 +68,9 @@ int main(int argc, char **argv) /* POOL ROUNDS [ANSWERS CLASS] */
     pool_show("A / cc_sweep (per round)", ra, rounds);
     pool_show("B / cc_sweep (per round)", rb, rounds);
     pool_show("B / A (per round)", rba, rounds);
+    /* (pool_show sorts what it shows: the split by state takes the copies made per round) */
+    pool_show_states("B / cc_sweep", rb2, sw, rounds);
+    pool_show_states("B / A", rba2, sw, rounds);
     return 0;
 }
 C

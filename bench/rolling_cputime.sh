@@ -6,7 +6,9 @@
 #   bench/rolling_cputime.sh BUILD POOL [ROUNDS [ANSWERS CLASS]]
 # BUILD: a build folder (its src/libcirclecollide.a is linked); POOL: from
 # `bench_pair_rolling dump 20000 pool.bin`; ROUNDS: 15 unless given. Prints the medians and the
-# spreads (min - max) over the rounds of each, and of the per-round ratio. With ANSWERS (a
+# spreads (min - max) over the rounds of each, and of the per-round ratio, then that ratio over
+# the rounds in which cc_sweep ran within 15 % of its fastest and over the others (the machine's
+# two states; bench/rolling_pool.h). With ANSWERS (a
 # FILE.ours of `bench_pair_rolling time`, as bench/rolling_callgrind.sh takes it) and CLASS
 # (hits-rest, hits-moving, misses-rest or misses-moving: by that answer, and by whether a
 # circle is at rest), only the pairs of that class are timed.
@@ -21,7 +23,7 @@ int main(int argc, char **argv) /* POOL ROUNDS [ANSWERS CLASS] */
 {
     int rounds = atoi(argv[2]), r;
     long n = pool_load(argv[1], argc > 4 ? argv[3] : NULL, argc > 4 ? argv[4] : NULL), i;
-    double roll[99], sweep[99], ratio[99];
+    double roll[99], sweep[99], ratio[99], ratio2[99], sweep2[99];
     volatile double acc = 0.0;
     if (n < 1 || rounds < 1 || rounds > 99)
         return 2;
@@ -43,11 +45,13 @@ int main(int argc, char **argv) /* POOL ROUNDS [ANSWERS CLASS] */
         }
         sweep[r] = (pool_cpu() - t0) / (double)n * 1e9;
         ratio[r] = roll[r] / sweep[r];
+        ratio2[r] = ratio[r], sweep2[r] = sweep[r]; /* (pool_show sorts: copies for the split) */
     }
     printf("%ld pairs, %d rounds; CPU ns per pair: median (min - max)\n", n, rounds);
     pool_show("cc_sweep_rolling", roll, rounds);
     pool_show("cc_sweep", sweep, rounds);
     pool_show("ratio (per round)", ratio, rounds);
+    pool_show_states("ratio", ratio2, sweep2, rounds);
     return 0;
 }
 C

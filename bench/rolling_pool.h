@@ -40,6 +40,36 @@ static void pool_show(const char *name, double *v, int n)
     printf("  %-26s %8.3f  (%.3f - %.3f)\n", name, v[n / 2], v[0], v[n - 1]);
 }
 
+/* The rounds split by the machine's state (docs/BENCHMARKS.md section 8, stop 28: the ratio to
+ * cc_sweep moves between ~2.3 and ~3.2 with it, from outside): the median (min - max) of v over
+ * the rounds in which cc_sweep ran within 15 % of its fastest in this run, and over the others;
+ * with cc_sweep's own median in each, which tells the state (on the machine of those notes,
+ * ~23 ns per pool pair on a quiet core, 31-44 on a busy one). */
+static void pool_show_states(const char *name, const double *v, const double *sweep, int n)
+{
+    double fast[99], slow[99], fs[99], ss[99], lo = sweep[0];
+    int i, nf = 0, ns = 0;
+    char label[96];
+    for (i = 1; i < n; i++)
+        lo = sweep[i] < lo ? sweep[i] : lo;
+    for (i = 0; i < n; i++) {
+        if (sweep[i] <= 1.15 * lo)
+            fs[nf] = sweep[i], fast[nf++] = v[i];
+        else
+            ss[ns] = sweep[i], slow[ns++] = v[i];
+    }
+    qsort(fs, (size_t)nf, sizeof *fs, pool_cmp);
+    snprintf(label, sizeof label, "%s, %d fastest rounds", name, nf);
+    pool_show(label, fast, nf);
+    printf("    (cc_sweep %.1f ns in those)\n", fs[nf / 2]);
+    if (ns > 0) {
+        qsort(ss, (size_t)ns, sizeof *ss, pool_cmp);
+        snprintf(label, sizeof label, "%s, %d other rounds", name, ns);
+        pool_show(label, slow, ns);
+        printf("    (cc_sweep %.1f ns in those)\n", ss[ns / 2]);
+    }
+}
+
 /* The pairs of the file pool (14 doubles each: bench_pair_rolling's format) into pool_q; with
  * answers (a FILE.ours of `bench_pair_rolling time`) and class (hits-rest, hits-moving,
  * misses-rest or misses-moving), only the pairs of that class: by that answer, and by whether a
