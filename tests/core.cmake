@@ -12,6 +12,10 @@ cc_add_test(NAME test_rolling SOURCES test_rolling.c LABELS core TIMEOUT 300)
 cc_add_test(NAME test_rolling_touch SOURCES test_rolling_touch.c LABELS core TIMEOUT 60)
 cc_add_test(NAME test_rolling_touch_float SOURCES test_rolling_touch.c LABELS core TIMEOUT 60)
 target_compile_definitions(test_rolling_touch_float PRIVATE TEST_FLOAT)
+# the argument checks of the pairs that skip the full ones (cc_sweep_rolling's ordinary pairs)
+cc_add_test(NAME test_rolling_checks SOURCES test_rolling_checks.c LABELS core TIMEOUT 60)
+cc_add_test(NAME test_rolling_checks_float SOURCES test_rolling_checks.c LABELS core TIMEOUT 60)
+target_compile_definitions(test_rolling_checks_float PRIVATE TEST_FLOAT)
 # the version is what the loaded library says: check it against the shared one
 cc_add_test(NAME test_version SOURCES test_version.c LABELS core SHARED)
 
