@@ -517,8 +517,8 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  *         they cannot settle it); a circle comes to rest at its exact stop time
  *         and costs nothing from then on until something hits it. Two circles that come to rest
  *         exactly touching do not collide. Pairs of which neither decelerates cost what they
- *         cost without friction; a decelerating pair costs 3.0 to 3.2 times a straight one on a
- *         quiet core (2.3 to 2.9 on a busy one), and a world in which every circle rolls about
+ *         cost without friction; a decelerating pair costs 2.9 to 3.0 times a straight one on a
+ *         quiet core (2.4 to 2.5 on a busy one), and a world in which every circle rolls about
  *         3.5 times one without friction per collision (docs/BENCHMARKS.md: bench_pair_rolling,
  *         bench_world features).
  * SWEPT, DISCRETE  Move and sweep along the same paths, at the end of each step as before.
