@@ -322,6 +322,12 @@ def main():
             w("| %s | %s | %s | %s - %s | %s | %s |" % (r["variant"], r["n"], g(r["ns_per_step"]), g(r["ns_min"]),
                                                      g(r["ns_max"]), g(r["ratio_to_empty"]), g(r["events_per_step"])))
         w("")
+    if features or idle:
+        # the hand-kept account of those rows' history (bench/features_notes.md), after the measured tables
+        fnotes = read(os.path.join(os.path.dirname(os.path.abspath(__file__)), "features_notes.md"))
+        if fnotes:
+            w(fnotes.rstrip())
+            w("")
 
     # ---- queries and walls (bench_queries)
     casts, walls = read(os.path.join(res, "casts.txt")), read(os.path.join(res, "walls.txt"))
@@ -357,6 +363,11 @@ def main():
         w("\n".join(l for l in py.splitlines() if not l.startswith("figure ")))
         w("```")
         w("")
+        # the hand-kept reading of an earlier run (bench/python_notes.md), after the measured block
+        pnotes = read(os.path.join(os.path.dirname(os.path.abspath(__file__)), "python_notes.md"))
+        if pnotes:
+            w(pnotes.rstrip())
+            w("")
 
     # ---- rolling pair (bench_pair_rolling + pooltool_rolling.py, issue 12)
     rolling = read(os.path.join(res, "rolling.txt"))
