@@ -112,12 +112,13 @@ class Progress:
     the time since the start), elapsed time. On a terminal it redraws one line; elsewhere it
     writes a line per finished task."""
 
-    def __init__(self, total: int, stream: TextIO = sys.stderr, enabled: bool = True) -> None:
-        self.total, self.stream, self.enabled = total, stream, enabled
+    def __init__(self, total: int, stream: Optional[TextIO] = None, enabled: bool = True) -> None:
+        self.total, self.enabled = total, enabled
+        self.stream: TextIO = stream or sys.stderr
         self.done = 0
         self.collisions: Dict[str, int] = {}
         self.start = time.monotonic()
-        self.tty = hasattr(stream, "isatty") and stream.isatty()
+        self.tty = hasattr(self.stream, "isatty") and self.stream.isatty()
         self._lock = threading.Lock()
 
     def event(self, event: Any) -> None:
@@ -262,7 +263,9 @@ def default_out() -> str:
     return os.path.abspath(datetime.datetime.now().strftime("circlecollide-eos-%Y%m%d-%H%M%S"))
 
 
-def run_eos(args: argparse.Namespace, stdout: TextIO = sys.stdout, stderr: TextIO = sys.stderr) -> List[Dict[str, Any]]:
+def run_eos(args: argparse.Namespace, stdout: Optional[TextIO] = None, stderr: Optional[TextIO] = None) -> List[Dict[str, Any]]:
+    stdout = stdout or sys.stdout
+    stderr = stderr or sys.stderr
     distributed = extra("distributed")
     Client, LocalCluster, as_completed = distributed.Client, distributed.LocalCluster, distributed.as_completed
 

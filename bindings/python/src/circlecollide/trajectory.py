@@ -7,8 +7,9 @@ A frame holds, for the live circles in id order (``World.ids``):
 
 ==============================  ===============================================================
 ``configuration.dimensions``    2
-``configuration.box``           ``[Lx, Ly, 1, 0, 0, 0]``: the period along a periodic axis; along
-                                an open one the ``open_box`` length (see ``Trajectory``)
+``configuration.box``           ``[Lx, Ly, 0, 0, 0, 0]`` (Lz 0: a 2D box, as HOOMD writes it): the
+                                period along a periodic axis, the ``open_box`` length along an
+                                open one (see ``Trajectory``)
 ``configuration.step``          the frame's step (``append(step=...)``; by default 0, 1, 2, ...)
 ``particles.position``          (N, 3), z = 0: the position within the period, moved by -L/2
                                 along each periodic axis (HOOMD's box is centred on the origin:
@@ -54,7 +55,7 @@ class Trajectory:
     creates it), ``"x"`` creates and refuses an existing one. Along an open (non-periodic) axis
     the box has the length ``open_box`` gives for that axis (a pair; only the open axes' values
     are read), by default twice the largest |coordinate| plus the largest radius of the first
-    frame, rounded up to a power of two, and kept for the whole file so that viewers see one box.
+    frame along that axis, rounded up to a power of two, and kept for the whole file so that viewers see one box.
     Use as a context manager, or call ``close``::
 
         with Trajectory("run.gsd") as traj:
@@ -101,11 +102,15 @@ class Trajectory:
         self._file.flush()
 
     def _box_lengths(self, world: "World", pos: np.ndarray, radii: np.ndarray) -> "tuple[float, float]":
-        if self._open_box is None:
-            reach = float(np.abs(pos).max() + radii.max()) if len(radii) else 0.5
-            size = 2.0 ** math.ceil(math.log2(2.0 * max(reach, 0.5)))
-            self._open_box = (size, size)
-        return tuple(p if p > 0 else o for p, o in zip(world.period, self._open_box))  # type: ignore[return-value]
+        if self._open_box is None:  # the first frame's extent along each axis
+            sizes = []
+            for axis in range(2):
+                reach = float(np.abs(pos[:, axis]).max() + radii.max()) if len(radii) else 0.5
+                sizes.append(2.0 ** math.ceil(math.log2(2.0 * max(reach, 0.5))))
+            self._open_box = (sizes[0], sizes[1])
+        lx = world.period[0] if world.period[0] > 0 else self._open_box[0]
+        ly = world.period[1] if world.period[1] > 0 else self._open_box[1]
+        return lx, ly
 
     def append(self, world: "World", step: Optional[int] = None) -> int:
         """Appends the world's state now as a frame; ``step`` (an int >= 0) is its
@@ -143,7 +148,7 @@ class Trajectory:
         f = self._frame_type()
         f.configuration.step = int(step)
         f.configuration.dimensions = 2
-        f.configuration.box = [lengths[0], lengths[1], 1.0, 0.0, 0.0, 0.0]
+        f.configuration.box = [lengths[0], lengths[1], 0.0, 0.0, 0.0, 0.0]
         f.particles.N = n
         f.particles.types = [TYPE_NAME]
         f.particles.typeid = np.zeros(n, dtype=np.uint32)
