@@ -28,6 +28,11 @@
  *              default. cc_result_string() names every code.
  * Untouched    On any error and on CC_MISS, every output argument is left exactly as it was
  *              (bit for bit). Bad input is reported, never undefined behaviour.
+ * Batches      A call that takes an array of inputs (cc_world_add_circles, 1.2) checks all of
+ *              them before it changes anything: when one is refused nothing changes, neither
+ *              for the inputs before it nor after, and the call says which one through its own
+ *              out argument (the one output an error writes); else it does what the calls of
+ *              one element each, in order, would do.
  * Precision    Each pair function has a single-precision twin with the suffix f (as in libm),
  *              on field-for-field float copies of the types; the algorithm is the same, and the
  *              float path computes in float only.
@@ -65,7 +70,7 @@ extern "C" {
 /* ---- Version ------------------------------------------------------------------------------ */
 
 #define CC_VERSION_MAJOR 1 /* bumped only on an ABI break: also the SONAME */
-#define CC_VERSION_MINOR 1 /* bumped when symbols or struct fields are added */
+#define CC_VERSION_MINOR 2 /* bumped when symbols or struct fields are added */
 #define CC_VERSION_PATCH 0
 #define CC_VERSION ((CC_VERSION_MAJOR << 16) | (CC_VERSION_MINOR << 8) | CC_VERSION_PATCH)
 
@@ -451,6 +456,17 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
  * of others: in EXACT that may call the contact callback before this returns. */
 CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c);
 
+/* Adds n circles (n >= 0; c may be NULL when n is 0), with what n calls of cc_world_add_circle
+ * for c[0], c[1], ... in that order would do: the same ids, written to ids_out[0..n) when
+ * ids_out is not NULL, the same overlaps resolved and callbacks fired, the same state after
+ * (cc_world_hash). Returns n, or an error and adds none of them (see "Batches" above): the
+ * first circle cc_world_add_circle would refuse decides, CC_ERR_INVALID for an invalid circle
+ * (or one too wide for the period), CC_ERR_FULL for the first that finds the world full, and its
+ * index is written to *failed (when failed is not NULL), -1 when no one circle is at fault (NULL
+ * w, n < 0, c NULL with n > 0, or called from a callback). ids_out and, on success, failed are
+ * left untouched otherwise. One call for a whole scene: a binding crosses its FFI once. (1.2) */
+CC_API int cc_world_add_circles(cc_world *w, const cc_circle *c, int n, int *ids_out, int *failed);
+
 /* Adds a static wall (a == b: a point). Returns its id (0, 1, ... in order of addition),
  * CC_ERR_FULL or CC_ERR_INVALID. Walls cannot be removed. */
 CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s);
@@ -537,6 +553,12 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  * count of periods taken off saturates at 2^30 either way (a circle set 1e300 away keeps its
  * exact image, not that count). CC_OK, CC_ERR_NOT_FOUND or CC_ERR_INVALID (NULL). */
 CC_API int cc_world_get_unwrapped(const cc_world *w, int id, cc_vec2 *out);
+
+/* cc_world_get_unwrapped for every live circle, as cc_world_get_circles copies them: up to
+ * capacity in increasing id order into ids[] and out[] (either may be NULL to skip it). Returns
+ * the number of live circles (which may exceed capacity), or CC_ERR_INVALID (NULL w, capacity
+ * < 0). With cc_world_get_circles, the images of a periodic box: (unwrapped - pos) / period. (1.2) */
+CC_API int cc_world_get_unwrapped_all(const cc_world *w, int *ids, cc_vec2 *out, int capacity);
 
 /* Current world time (0 after init); NaN when w is NULL. */
 CC_API double cc_world_time(const cc_world *w);

@@ -2,6 +2,7 @@
 # a few times that with ASan + UBSan (the soak's million collisions: ~1 s optimised, ~3 s
 # with sanitizers, ~9 s with sanitizers and no optimisation).
 cc_add_test(NAME test_world_api SOURCES test_world_api.c LABELS world)
+cc_add_test(NAME test_world_bulk SOURCES test_world_bulk.c LABELS world)
 cc_add_test(NAME test_world_exact SOURCES test_world_exact.c LABELS world)
 cc_add_test(NAME test_world_modes SOURCES test_world_modes.c LABELS world)
 cc_add_test(NAME test_world_modes_grid SOURCES test_world_modes_grid.c LABELS world)

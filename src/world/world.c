@@ -381,6 +381,35 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
     return id;
 }
 
+/* The batch is checked whole before anything is added (each circle as cc_world_add_circle
+ * checks it, and the room for all of them), so that a refusal changes nothing; then each is
+ * added by cc_world_add_circle, which cannot refuse it any more. */
+CC_API int cc_world_add_circles(cc_world *w, const cc_circle *c, int n, int *ids_out, int *failed)
+{
+    int i, id;
+    if (!cc__world_ok(w) || w->busy || n < 0 || (c == NULL && n > 0)) {
+        if (failed != NULL)
+            *failed = -1;
+        return CC_ERR_INVALID;
+    }
+    for (i = 0; i < n; i++) {
+        int r = !cc__circle_ok(&c[i]) || !cc__fits_period(w, &c[i]) ? CC_ERR_INVALID
+                : i >= w->max_circles - w->n_circles              ? CC_ERR_FULL
+                                                                  : CC_OK;
+        if (r != CC_OK) {
+            if (failed != NULL)
+                *failed = i;
+            return r;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        id = cc_world_add_circle(w, &c[i]);
+        if (ids_out != NULL)
+            ids_out[i] = id;
+    }
+    return n;
+}
+
 /* Takes body id out of the grid and the queue; its count bump makes others' events stale. */
 static void cc__unfile(cc_world *w, int id)
 {
@@ -471,23 +500,36 @@ CC_API int cc_world_get_circle(const cc_world *w, int id, cc_circle *out)
     return CC_OK;
 }
 
+/* The unwrapped position of the body at storage index k: its lazy position plus the periods
+ * counted off it. */
+static void cc__unwrapped(const cc_world *w, int k, cc_vec2 *out)
+{
+    const cc__body *b = &CC__CARR(w, cc__body, off_body)[k];
+    const cc__props *p = &CC__CARR(w, cc__props, off_props)[k];
+    out->x = cc__bx(w, b, w->now) + (double)p->wrap[0] * w->period[0];
+    out->y = cc__by(w, b, w->now) + (double)p->wrap[1] * w->period[1];
+}
+
 CC_API int cc_world_get_unwrapped(const cc_world *w, int id, cc_vec2 *out)
 {
-    const cc__body *b;
-    const cc__props *p;
     int k;
     if (!cc__world_ok(w) || out == NULL)
         return CC_ERR_INVALID;
     if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
-    b = &CC__CARR(w, cc__body, off_body)[k];
-    p = &CC__CARR(w, cc__props, off_props)[k];
-    out->x = cc__bx(w, b, w->now) + (double)p->wrap[0] * w->period[0];
-    out->y = cc__by(w, b, w->now) + (double)p->wrap[1] * w->period[1];
+    cc__unwrapped(w, k, out);
     return CC_OK;
 }
 
-CC_API int cc_world_get_circles(const cc_world *w, int *ids, cc_circle *out, int capacity)
+/* What the bulk readers share: the live circles in increasing id order, the first capacity of
+ * them written (their ids into ids, their row by put into out, either skipped when NULL); the
+ * number of live circles. */
+typedef void (*cc__row_fn)(const cc_world *w, int k, void *out, int row);
+
+static void cc__circle_row(const cc_world *w, int k, void *out, int row) { cc__get(w, k, (cc_circle *)out + row); }
+static void cc__unwrapped_row(const cc_world *w, int k, void *out, int row) { cc__unwrapped(w, k, (cc_vec2 *)out + row); }
+
+static int cc__live_rows(const cc_world *w, int *ids, void *out, int capacity, cc__row_fn put)
 {
     int i, k = 0, idx;
     if (!cc__world_ok(w) || capacity < 0)
@@ -499,11 +541,21 @@ CC_API int cc_world_get_circles(const cc_world *w, int *ids, cc_circle *out, int
             if (ids != NULL)
                 ids[k] = i;
             if (out != NULL)
-                cc__get(w, idx, &out[k]);
+                put(w, idx, out, k);
         }
         k++;
     }
     return k;
+}
+
+CC_API int cc_world_get_unwrapped_all(const cc_world *w, int *ids, cc_vec2 *out, int capacity)
+{
+    return cc__live_rows(w, ids, out, capacity, cc__unwrapped_row);
+}
+
+CC_API int cc_world_get_circles(const cc_world *w, int *ids, cc_circle *out, int capacity)
+{
+    return cc__live_rows(w, ids, out, capacity, cc__circle_row);
 }
 
 CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out)

@@ -226,6 +226,9 @@ PROTOTYPES: dict[str, tuple[Any, list[Any]]] = {
     "cc_world_query_circle": (c_int, [_vp, cc_vec2, c_double, ctypes.c_uint32, P(c_int), c_int]),
     "cc_world_query_box": (c_int, [_vp, cc_vec2, cc_vec2, ctypes.c_uint32, P(c_int), c_int]),
     "cc_world_hash": (ctypes.c_uint64, [_vp]),
+    # 1.2
+    "cc_world_add_circles": (c_int, [_vp, P(cc_circle), c_int, P(c_int), P(c_int)]),
+    "cc_world_get_unwrapped_all": (c_int, [_vp, P(c_int), P(cc_vec2), c_int]),
 }
 
 #: Functions a library of our major version may lack while the world is being built; calling a

@@ -242,10 +242,13 @@ class World:
         size = L.cc_world_size(byref(d))
         if size == 0:
             raise CircleCollideError(_lib.ERR_INVALID, "World")
-        # 16-byte alignment: over-allocate and start at the first aligned address.
+        # 16-byte alignment: over-allocate and start at the first aligned address. numpy's zeros
+        # come from calloc, whose large blocks are fresh pages zeroed by the system when first
+        # touched: a world of a million circles (217 MB) costs nothing until it is used, where
+        # a ctypes array is cleared byte by byte at once (0.36 s)
         self._size = int(size)
-        self._buffer = (ctypes.c_char * (size + 16))()
-        base = ctypes.addressof(self._buffer)
+        self._buffer = np.zeros(size + 16, dtype=np.uint8)
+        base = int(self._buffer.ctypes.data)
         self._addr = base + (-base % 16)
         status = ctypes.c_int(0)
         w = L.cc_world_init(self._addr, size, byref(d), byref(status))
@@ -270,12 +273,14 @@ class World:
         self.max_segments = d.max_segments
         self.mode = mode
         self.period: Vec2 = Vec2(px, py)
-        self._scratch = (_lib.cc_circle * max(1, self.max_circles))()
-        self._ids = (ctypes.c_int * max(1, self.max_circles))()
-        # cc_circle is 6 doubles (pos.x, pos.y, vel.x, vel.y, radius, mass): one float64 view of
-        # the scratch rows, made once (np.ctypeslib.as_array per call parses the struct's
-        # format each time: about half the cost of reading positions)
-        self._table_view = np.frombuffer(self._scratch, dtype=np.float64).reshape(-1, 6)
+        # cc_circle is 6 doubles (pos.x, pos.y, vel.x, vel.y, radius, mass): the scratch rows
+        # are a float64 table (zeroed lazily, as the world) seen by ctypes as cc_circle[],
+        # made once (np.ctypeslib.as_array per call parses the struct's format each time:
+        # about half the cost of reading positions)
+        self._table_view = np.zeros((max(1, self.max_circles), 6), dtype=np.float64)
+        self._scratch = (_lib.cc_circle * max(1, self.max_circles)).from_buffer(self._table_view)
+        self._ids_view = np.zeros(max(1, self.max_circles), dtype=np.intc)
+        self._ids = (ctypes.c_int * max(1, self.max_circles)).from_buffer(self._ids_view)
 
     def __repr__(self) -> str:
         return f"World(max_circles={self.max_circles}, mode={self.mode!r}, circles={len(self)}, time={self.time!r})"
@@ -421,6 +426,85 @@ class World:
         c = circle_to_c(circle)
         self._error = None
         return self._firing(self._call(L.cc_world_add_circle, self._w, byref(c)), "add_circle")
+
+    #: rows per C call of add_circles: a chunk's table of cc_circle (48 bytes a row) stays at
+    #: 12 MiB however many rows come
+    ADD_CHUNK = 1 << 18
+
+    def add_circles(self, pos: Any, vel: Any = 0.0, radius: Any = 1.0, mass: Any = 1.0) -> np.ndarray:
+        """Adds n circles from arrays: ``pos`` of shape (n, 2), ``vel`` (n, 2) or one velocity,
+        ``radius`` and ``mass`` (n,) or one value each (``mass`` inf: immovable). Returns their
+        ids (an int array of n, in row order), which are what n ``add_circle`` calls in row
+        order would return, and the world ends in the state those calls leave
+        (cc_world_add_circles: one C call per ``ADD_CHUNK`` rows, not one per circle).
+
+        Every row is checked before any is added: a row the library would refuse (a value not
+        finite, a radius <= 0, a mass <= 0 or NaN, a circle too wide for the period, or more
+        rows than the world has room for) raises ``CircleCollideError`` naming the row and the
+        value, and nothing is added. In ``"exact"`` mode a circle put on top of another after
+        the first step is pushed apart at once and may fire on_contact, as ``add_circle`` does.
+        """
+        self._mutating("add_circles")
+        table = _circle_table(pos, vel, radius, mass, "add_circles")
+        n = table.shape[0]
+        # the first row the library would refuse decides, as for add_circle called row by row
+        room = self.max_circles - len(self)
+        self._check_rows(table[: room + 1])
+        if n > room:
+            raise CircleCollideError(
+                _lib.ERR_FULL, "add_circles", f"row {room} does not fit: the world holds {self.max_circles} circles"
+            )
+        ids = np.empty(n, dtype=np.intc)
+        failed = ctypes.c_int(-1)
+        self._error = None
+        for start in range(0, n, self.ADD_CHUNK):
+            chunk = table[start : start + self.ADD_CHUNK]
+            code = self._call(
+                L.cc_world_add_circles,
+                self._w,
+                chunk.ctypes.data_as(ctypes.POINTER(_lib.cc_circle)),
+                chunk.shape[0],
+                ids[start:].ctypes.data_as(ctypes.POINTER(ctypes.c_int)),
+                byref(failed),
+            )
+            if code < 0:  # what the checks above let through: rows before this chunk were added
+                self._error = None
+                row = start + failed.value if failed.value >= 0 else start
+                raise CircleCollideError(code, f"add_circles: row {row} (rows before {start} were added)")
+        self._firing(0, "add_circles")
+        return ids
+
+    def _check_rows(self, table: np.ndarray) -> None:
+        """The rows' values as the library checks them (cc_circle's rules, and the room a
+        circle needs in a periodic world: 2 diameters plus a cell along each periodic axis, the
+        header's "Periodic boxes"), so that a bad row is named with its value before any row
+        is added."""
+        p, v, r, m = table[:, 0:2], table[:, 2:4], table[:, 4], table[:, 5]
+        d = 2.0 * r
+        need = 2.0 * d + np.maximum(1.0625 * d, self._def_args["cell_size"])
+        ok = np.isfinite(table[:, 0:5]).all(axis=1) & (r > 0) & (m > 0)
+        for period in self.period:
+            if period > 0:
+                ok &= need <= period
+        if ok.all():  # the common case, in one pass
+            return
+        i = int(np.flatnonzero(~ok)[0])
+        show = _errors.show
+        if not np.isfinite(p[i]).all():
+            say = f"pos must be finite, got ({show(p[i, 0])}, {show(p[i, 1])})"
+        elif not np.isfinite(v[i]).all():
+            say = f"vel must be finite, got ({show(v[i, 0])}, {show(v[i, 1])})"
+        elif not (np.isfinite(r[i]) and r[i] > 0):
+            say = f"radius must be finite and > 0, got {show(r[i])}"
+        elif not m[i] > 0:
+            say = f"mass must be > 0 (inf: immovable), got {show(m[i])}"
+        else:
+            axis = next(k for k, period in enumerate(self.period) if period > 0 and not need[i] <= period)
+            say = (
+                f"radius {show(r[i])} is too wide for the period {show(self.period[axis])} along {'xy'[axis]} "
+                "(it needs 2 diameters plus a cell)"
+            )
+        raise _errors.invalid("add_circles", f"row {i}: {say}")
 
     def add_segment(self, p: Iterable[float], q: Iterable[float]) -> int:
         """Adds a static wall from p to q; returns its id."""
@@ -639,6 +723,23 @@ class World:
 
     # ---- bulk state as numpy ------------------------------------------------------------
 
+    @property
+    def unwrapped_positions(self) -> np.ndarray:
+        """(n, 2) float64 array of the live circles' positions without the periods taken off
+        (``unwrapped`` for each), rows in id order as ``positions``: a read-only snapshot, one C
+        call (cc_world_get_unwrapped_all). ``(unwrapped_positions - positions) / period`` is
+        each circle's image along a periodic axis."""
+        n = check(L.cc_world_get_unwrapped_all(self._w, None, None, 0), "unwrapped_positions")
+        out = np.empty((n, 2), dtype=np.float64)
+        if n:
+            got = check(
+                L.cc_world_get_unwrapped_all(self._w, None, out.ctypes.data_as(ctypes.POINTER(_lib.cc_vec2)), n),
+                "unwrapped_positions",
+            )
+            assert got == n
+        out.flags.writeable = False
+        return out
+
     def _table(self) -> np.ndarray:
         n = check(L.cc_world_get_circles(self._w, self._ids, self._scratch, len(self._scratch)), "get_circles")
         # a view of the scratch rows (the callers copy what they return)
@@ -648,7 +749,8 @@ class World:
     def ids(self) -> List[int]:
         """Ids of the live circles, in increasing order (the row order of positions)."""
         n = min(check(L.cc_world_get_circles(self._w, self._ids, None, len(self._ids)), "ids"), len(self._ids))
-        return list(self._ids[:n])
+        ids: List[int] = self._ids_view[:n].tolist()
+        return ids
 
     def __len__(self) -> int:
         return check(L.cc_world_get_circles(self._w, None, None, 0), "len")
@@ -723,6 +825,18 @@ class World:
                 raise CircleCollideError(code, f"{context}: row {i} (circle {cid})")
         self._firing(0, context)
 
+    def write_gsd(self, path: Any, mode: str = "w", step: Optional[int] = None, **options: Any) -> int:
+        """Writes the world's state now as a frame of a GSD trajectory (HOOMD-blue's format:
+        positions within the box, images, velocities, diameters, masses, the box and which axes
+        wrap, the world's time; ``circlecollide.trajectory`` says field by field). ``mode``
+        ``"w"`` makes a new file, ``"a"`` appends a frame; ``step`` is its step (default: its
+        index); ``options`` are ``Trajectory``'s (``precision``, ``open_box``). For many frames
+        keep one ``circlecollide.trajectory.Trajectory`` open instead. Needs the ``gsd`` package
+        (``pip install circlecollide[science]``). Returns the frame's index in the file."""
+        from .trajectory import write_gsd
+
+        return write_gsd(self, path, mode, step, **options)
+
     def kinetic_energy(self) -> float:
         """Sum of m |v|^2 / 2 over the movable circles."""
         t = self._table()
@@ -762,6 +876,27 @@ def _unpickle_world(state: Dict[str, Any]) -> World:
     if w.hash() != state["hash"]:
         raise ValueError("circlecollide: the unpickled world's state hash differs from the pickled one's (corrupt pickle?)")
     return w
+
+
+def _circle_table(pos: Any, vel: Any, radius: Any, mass: Any, context: str) -> np.ndarray:
+    """The rows as a C-contiguous (n, 6) float64 array: cc_circle's layout (pos.x, pos.y, vel.x,
+    vel.y, radius, mass), so that a chunk of it is an array of cc_circle."""
+    try:
+        p = np.asarray(pos, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise ValueError(f"{context}: pos must be an (n, 2) array of numbers, got {pos!r}") from None
+    if p.ndim != 2 or p.shape[1] != 2:
+        raise ValueError(f"{context}: pos must have shape (n, 2), got {p.shape}")
+    n = p.shape[0]
+    table = np.empty((n, 6), dtype=np.float64)
+    table[:, 0:2] = p
+    for cols, value, name, shape in ((slice(2, 4), vel, "vel", (n, 2)), (4, radius, "radius", (n,)), (5, mass, "mass", (n,))):
+        try:
+            a = np.asarray(value, dtype=np.float64)
+            table[:, cols] = np.broadcast_to(a, shape)
+        except (TypeError, ValueError):
+            raise ValueError(f"{context}: {name} must be one value or an array of shape {shape}, got {np.shape(value)}") from None
+    return table
 
 
 def _frozen(a: np.ndarray) -> np.ndarray:

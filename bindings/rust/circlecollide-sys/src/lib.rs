@@ -12,7 +12,7 @@ use core::ffi::{c_char, c_int, c_long, c_uint, c_void};
 // ---- version and result codes ------------------------------------------------------------
 
 pub const CC_VERSION_MAJOR: u32 = 1;
-pub const CC_VERSION_MINOR: u32 = 1;
+pub const CC_VERSION_MINOR: u32 = 2;
 pub const CC_VERSION_PATCH: u32 = 0;
 pub const CC_VERSION: u32 = (CC_VERSION_MAJOR << 16) | (CC_VERSION_MINOR << 8) | CC_VERSION_PATCH;
 
@@ -279,6 +279,10 @@ extern "C" {
     pub fn cc_world_query_circle(w: *const cc_world, c: cc_vec2, radius: f64, mask: u32, ids: *mut c_int, capacity: c_int) -> c_int;
     pub fn cc_world_query_box(w: *const cc_world, lo: cc_vec2, hi: cc_vec2, mask: u32, ids: *mut c_int, capacity: c_int) -> c_int;
     pub fn cc_world_hash(w: *const cc_world) -> u64;
+
+    // 1.2
+    pub fn cc_world_add_circles(w: *mut cc_world, c: *const cc_circle, n: c_int, ids_out: *mut c_int, failed: *mut c_int) -> c_int;
+    pub fn cc_world_get_unwrapped_all(w: *const cc_world, ids: *mut c_int, out: *mut cc_vec2, capacity: c_int) -> c_int;
 }
 
 /// True when this build of the library contains the world (cc_world_*).

@@ -98,6 +98,34 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+impl Error {
+    pub(crate) fn invalid() -> Error {
+        Error { code: sys::CC_ERR_INVALID }
+    }
+}
+
+/// A batch call refused (`World::add_circles`; nothing changed): the library's error and the
+/// index of the first element refused, `None` when no one element is at fault (a call from a
+/// callback, a batch longer than a C int counts).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct BatchError {
+    /// The library's error (`Invalid` or `Full`).
+    pub error: Error,
+    /// The index of the element refused.
+    pub index: Option<usize>,
+}
+
+impl fmt::Display for BatchError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.index {
+            Some(i) => write!(f, "element {i}: {}", self.error),
+            None => write!(f, "{}", self.error),
+        }
+    }
+}
+
+impl std::error::Error for BatchError {}
+
 /// The result of every fallible call.
 pub type Result<T> = core::result::Result<T, Error>;
 

@@ -9,7 +9,7 @@ use core::ptr::NonNull;
 use std::any::Any;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 
-use crate::{check, sys, Circle, ContactKind, Error, Result, Segment, Vec2};
+use crate::{check, sys, BatchError, Circle, ContactKind, Error, Result, Segment, Vec2};
 
 /// How the world advances.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -453,6 +453,26 @@ impl<'cb> World<'cb> {
         check(code).map(CircleId)
     }
 
+    /// Adds the circles in order, in one C call (`cc_world_add_circles`): the ids and the world's
+    /// state are those of an `add_circle` per circle. Every circle is checked before any is
+    /// added: when one is refused (invalid, too wide for the period, or the world full when it
+    /// comes) nothing is added, and the error names its index. Not from a callback (a refusal
+    /// with no index). In EXACT an added circle that overlaps another may fire the contact
+    /// callback, as `add_circle`'s does.
+    pub fn add_circles(&mut self, circles: &[Circle]) -> core::result::Result<Vec<CircleId>, BatchError> {
+        let n = c_int::try_from(circles.len()).map_err(|_| BatchError { error: Error::invalid(), index: None })?;
+        let mut ids = vec![0 as c_int; circles.len()];
+        let mut failed: c_int = -1;
+        let code = unsafe {
+            sys::cc_world_add_circles(self.w.as_ptr(), circles.as_ptr().cast(), n, ids.as_mut_ptr(), &mut failed)
+        };
+        self.resume_panic();
+        match check(code) {
+            Ok(_) => Ok(ids.into_iter().map(CircleId).collect()),
+            Err(error) => Err(BatchError { error, index: usize::try_from(failed).ok() }),
+        }
+    }
+
     /// Adds a static wall.
     pub fn add_segment(&mut self, s: &Segment) -> Result<SegmentId> {
         let s: *const Segment = s;
@@ -496,6 +516,17 @@ impl<'cb> World<'cb> {
         let n = unsafe { sys::cc_world_get_circles(self.w.as_ptr(), ids.as_mut_ptr(), out.as_mut_ptr().cast(), cap as c_int) };
         let n = (n.max(0) as usize).min(cap);
         ids.into_iter().zip(out).take(n).map(|(i, c)| (CircleId(i), c)).collect()
+    }
+
+    /// Every live circle's position without the periods taken off (`unwrapped` for each), in
+    /// increasing id order, in one C call (`cc_world_get_unwrapped_all`).
+    pub fn unwrapped_all(&self) -> Vec<(CircleId, Vec2)> {
+        let cap = self.capacity.max(1);
+        let mut ids = vec![0 as c_int; cap];
+        let mut out = vec![sys::cc_vec2::default(); cap];
+        let n = unsafe { sys::cc_world_get_unwrapped_all(self.w.as_ptr(), ids.as_mut_ptr(), out.as_mut_ptr(), cap as c_int) };
+        let n = (n.max(0) as usize).min(cap);
+        ids.into_iter().zip(out).take(n).map(|(i, p)| (CircleId(i), Vec2::new(p.x, p.y))).collect()
     }
 
     /// Number of live circles.

@@ -502,3 +502,46 @@ fn a_world_with_callbacks_refuses_to_clone() {
     let w = World::with_callback(&def(2, 0), |_: &ContactEvent| {}).unwrap();
     assert_eq!(w.try_clone().unwrap_err().kind(), ErrorKind::Invalid);
 }
+
+#[test]
+fn add_circles_is_one_add_per_circle_or_nothing() {
+    // three circles into a world of room 4 that holds one: ids 1, 2, 3, as three add_circle give
+    let mut w = World::new(&def(4, 0)).unwrap();
+    let mut singles = World::new(&def(4, 0)).unwrap();
+    let first = Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0);
+    w.add_circle(&first).unwrap();
+    singles.add_circle(&first).unwrap();
+    let batch: Vec<Circle> = (0..3).map(|i| Circle::new(v(5.0 * (i + 1) as f64, 0.0), v(-1.0, 0.5), 1.0)).collect();
+    let ids = w.add_circles(&batch).unwrap();
+    assert_eq!(ids, vec![CircleId(1), CircleId(2), CircleId(3)]);
+    for c in &batch {
+        singles.add_circle(c).unwrap();
+    }
+    assert_eq!(w.hash(), singles.hash());
+    // full: one more fits nowhere; the first circle refused is index 0, nothing changes
+    let before = w.hash();
+    let e = w.add_circles(&batch[..1]).unwrap_err();
+    assert_eq!((e.error.kind(), e.index), (ErrorKind::Full, Some(0)));
+    assert_eq!((w.hash(), w.len()), (before, 4));
+    // an invalid circle (radius 0, made past Circle::new's checks) at index 1 of 2: nothing added
+    let mut room = World::new(&def(8, 0)).unwrap();
+    let mut bad = batch[..2].to_vec();
+    bad[1].radius = 0.0;
+    let e = room.add_circles(&bad).unwrap_err();
+    assert_eq!((e.error.kind(), e.index, room.len()), (ErrorKind::Invalid, Some(1), 0));
+    assert_eq!(room.add_circles(&[]).unwrap(), vec![]);
+}
+
+#[test]
+fn unwrapped_all_is_unwrapped_for_each() {
+    // a circle at x = 9 moving at speed 1 in a period of 10: at t = 2.5 it is at 1.5, unwrapped 11.5
+    let mut w = World::new(&WorldDef { period: v(10.0, 10.0), ..def(4, 0) }).unwrap();
+    let a = w.add_circle(&Circle::new(v(9.0, 5.0), v(1.0, 0.0), 1.0)).unwrap();
+    let b = w.add_circle(&Circle::new(v(2.0, 1.0), v(0.0, -1.0), 1.0)).unwrap();
+    w.step(2.5).unwrap();
+    let all = w.unwrapped_all();
+    assert_eq!(all.len(), 2);
+    assert_eq!(all[0], (a, w.unwrapped(a).unwrap()));
+    assert_eq!(all[1], (b, w.unwrapped(b).unwrap()));
+    assert!(close(all[0].1.x, 11.5) && close(all[1].1.y, -1.5));
+}
