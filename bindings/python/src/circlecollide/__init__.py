@@ -36,7 +36,7 @@ from ._pair import (
 from ._batch import sweep_many
 from ._world import CastHit, CircleProps, ContactEvent, SegmentProps, SensorEvent, World, WorldStats
 
-__version__ = "1.1.0"
+__version__ = "1.2.0"
 
 
 def library_version() -> str:
