@@ -415,6 +415,7 @@ async function main() {
       { aim: { ...game.aim } }),
     lastShot: () => game.lastShot,
     fouls: () => game.fouls,
+    worldBytes: () => world.bytes,
     powerText: () => powerEl.textContent,
     steps: () => game.steps,
     time: () => world.time(),

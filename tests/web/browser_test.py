@@ -226,7 +226,8 @@ def main():
         journal = driver.execute_script("return ccPage.journal()")
         page_state = driver.execute_script("return ccPage.worldState()")
         run_figures = driver.execute_script(
-            "return {steps: ccPage.steps(), time: ccPage.time(), potted: ccPage.potted().length, fouls: ccPage.fouls()}")
+            "return {steps: ccPage.steps(), time: ccPage.time(), potted: ccPage.potted().length, fouls: ccPage.fouls(), "
+            "bytes: ccPage.worldBytes()}")
         chromium = driver.capabilities.get("browserVersion", "0").split(".")[0]
         # the reset button: a new rack in the same memory, nothing potted, the cue ball back
         driver.find_element("id", "reset").click()
@@ -271,10 +272,10 @@ def main():
     # what docs/WEB.md states of this run (scripts/doc_figures.py checks it against the text)
     with open(os.path.join(args.out, "figures.txt"), "w") as f:
         f.write("web.steps %d\nweb.world_time %.1f\nweb.potted %d\nweb.cue_potted %d\nweb.journal_lines %d\n"
-                "web.hash %s\nweb.circles %d\nweb.chromium %s\n"
+                "web.hash %s\nweb.circles %d\nweb.chromium %s\nweb.world_bytes %d\n"
                 % (run_figures["steps"], run_figures["time"], run_figures["potted"], run_figures["fouls"],
                    len(journal.splitlines()), page_lines[1].split()[-1] if len(page_lines) > 1 else "?",
-                   len(page_lines) - 2, chromium))
+                   len(page_lines) - 2, chromium, run_figures["bytes"]))
     print("browser test: %.1f s; screenshot %s" % (time.monotonic() - t_start, os.path.join(args.out, "pool.png")))
     for f in failures:
         print("FAILED: " + f)
