@@ -10,14 +10,6 @@
 void setUp(void) {}
 void tearDown(void) {}
 
-static cc_vec2 v2(double x, double y)
-{
-    cc_vec2 v;
-    v.x = x;
-    v.y = y;
-    return v;
-}
-
 /* The cue ball (id 0) at the origin, an object ball (id 1) at (10, 0), both of radius 1, a
  * third ball (id 2) of category 2 at (0, 5), a wall (id 0) at x = 30; grid or all pairs. */
 static cc_world *table(tw_mem *m, int max_circles, int mode)
@@ -57,10 +49,10 @@ static void test_the_cue_balls_cast_leaves_it_out(void)
             cc_world *w = table(&m, cap ? 64 : 8, mode);
             cc_query_filter f = CC_QUERY_FILTER_DEFAULT;
             cc_cast_hit h;
-            TEST_ASSERT_EQUAL_INT(CC_OVERLAP, cc_world_cast_circle(w, v2(0, 0), 1.0, v2(20, 0), 0xFFFFFFFFu, &h));
+            TEST_ASSERT_EQUAL_INT(CC_OVERLAP, cc_world_cast_circle(w, tw_vec2(0, 0), 1.0, tw_vec2(20, 0), 0xFFFFFFFFu, &h));
             TEST_ASSERT_EQUAL_INT(0, h.circle);
             f.ignore = 0;
-            TEST_ASSERT_EQUAL_INT(CC_HIT, cc_world_cast_circle_filtered(w, v2(0, 0), 1.0, v2(20, 0), &f, &h));
+            TEST_ASSERT_EQUAL_INT(CC_HIT, cc_world_cast_circle_filtered(w, tw_vec2(0, 0), 1.0, tw_vec2(20, 0), &f, &h));
             TEST_ASSERT_EQUAL_INT(1, h.circle);
             TEST_ASSERT_EQUAL_INT(-1, h.segment);
             TEST_ASSERT_EQUAL_DOUBLE(0.4, h.t);
@@ -68,12 +60,12 @@ static void test_the_cue_balls_cast_leaves_it_out(void)
             TEST_ASSERT_EQUAL_DOUBLE(1.0, h.normal.x);
             /* leaving out the object ball too would reach the wall: not a filter of walls */
             f.ignore = 1;
-            TEST_ASSERT_EQUAL_INT(CC_OVERLAP, cc_world_cast_circle_filtered(w, v2(0, 0), 1.0, v2(20, 0), &f, &h));
+            TEST_ASSERT_EQUAL_INT(CC_OVERLAP, cc_world_cast_circle_filtered(w, tw_vec2(0, 0), 1.0, tw_vec2(20, 0), &f, &h));
             TEST_ASSERT_EQUAL_INT(0, h.circle);
-            TEST_ASSERT_EQUAL_INT(CC_HIT, cc_world_cast_circle_filtered(w, v2(2, 0), 0.0, v2(40, 0), &f, &h));
+            TEST_ASSERT_EQUAL_INT(CC_HIT, cc_world_cast_circle_filtered(w, tw_vec2(2, 0), 0.0, tw_vec2(40, 0), &f, &h));
             TEST_ASSERT_EQUAL_INT(0, h.segment); /* wall 0, though ignore is 1: ids of circles only */
             f.ignore = 0;
-            TEST_ASSERT_EQUAL_INT(CC_HIT, cc_world_cast_circle_filtered(w, v2(20, 0), 0.0, v2(20, 0), &f, &h));
+            TEST_ASSERT_EQUAL_INT(CC_HIT, cc_world_cast_circle_filtered(w, tw_vec2(20, 0), 0.0, tw_vec2(20, 0), &f, &h));
             TEST_ASSERT_EQUAL_INT(0, h.segment); /* ignore 0 leaves circle 0 out, never wall 0 */
             tw_free(&m);
         }
@@ -87,24 +79,24 @@ static void test_queries_leave_the_ignored_circle_out(void)
     cc_world *w = table(&m, 64, CC_MODE_EXACT);
     cc_query_filter f = CC_QUERY_FILTER_DEFAULT;
     int ids[4] = {-7, -7, -7, -7};
-    TEST_ASSERT_EQUAL_INT(1, cc_world_query_circle_filtered(w, v2(0, 0), 0.5, &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_query_circle_filtered(w, tw_vec2(0, 0), 0.5, &f, ids, 4));
     TEST_ASSERT_EQUAL_INT(0, ids[0]);
     f.ignore = 0;
-    TEST_ASSERT_EQUAL_INT(0, cc_world_query_circle_filtered(w, v2(0, 0), 0.5, &f, ids, 4));
-    TEST_ASSERT_EQUAL_INT(1, cc_world_query_box_filtered(w, v2(-2, -2), v2(12, 2), &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(0, cc_world_query_circle_filtered(w, tw_vec2(0, 0), 0.5, &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_query_box_filtered(w, tw_vec2(-2, -2), tw_vec2(12, 2), &f, ids, 4));
     TEST_ASSERT_EQUAL_INT(1, ids[0]);
     f.ignore = 1;
-    TEST_ASSERT_EQUAL_INT(1, cc_world_query_box_filtered(w, v2(-2, -2), v2(12, 2), &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_query_box_filtered(w, tw_vec2(-2, -2), tw_vec2(12, 2), &f, ids, 4));
     TEST_ASSERT_EQUAL_INT(0, ids[0]);
     f.ignore = -1;
-    TEST_ASSERT_EQUAL_INT(2, cc_world_query_box_filtered(w, v2(-2, -2), v2(12, 2), &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(2, cc_world_query_box_filtered(w, tw_vec2(-2, -2), tw_vec2(12, 2), &f, ids, 4));
     TEST_ASSERT_EQUAL_INT(0, ids[0]);
     TEST_ASSERT_EQUAL_INT(1, ids[1]);
     f.mask = 2u; /* only category 2: ball 2 at (0, 5) */
-    TEST_ASSERT_EQUAL_INT(1, cc_world_query_box_filtered(w, v2(-20, -20), v2(20, 20), &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_query_box_filtered(w, tw_vec2(-20, -20), tw_vec2(20, 20), &f, ids, 4));
     TEST_ASSERT_EQUAL_INT(2, ids[0]);
     f.ignore = 2;
-    TEST_ASSERT_EQUAL_INT(0, cc_world_query_box_filtered(w, v2(-20, -20), v2(20, 20), &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(0, cc_world_query_box_filtered(w, tw_vec2(-20, -20), tw_vec2(20, 20), &f, ids, 4));
     tw_free(&m);
 }
 
@@ -119,8 +111,8 @@ static void test_defaults_unknown_ids_and_sizes(void)
     cc_cast_hit h, untouched;
     int ids[4] = {-7, -7, -7, -7}, k;
     static const int unknown[] = {99, -5, 3};
-    TEST_ASSERT_EQUAL_INT(3, cc_world_query_box_filtered(w, v2(-20, -20), v2(20, 20), NULL, ids, 4));
-    TEST_ASSERT_EQUAL_INT(CC_OVERLAP, cc_world_cast_circle_filtered(w, v2(0, 0), 1.0, v2(20, 0), NULL, &h));
+    TEST_ASSERT_EQUAL_INT(3, cc_world_query_box_filtered(w, tw_vec2(-20, -20), tw_vec2(20, 20), NULL, ids, 4));
+    TEST_ASSERT_EQUAL_INT(CC_OVERLAP, cc_world_cast_circle_filtered(w, tw_vec2(0, 0), 1.0, tw_vec2(20, 0), NULL, &h));
     TEST_ASSERT_EQUAL_INT(0, h.circle);
     {
         cc_circle c = tw_circle(-10, 0, 0, 0, 1, 1);
@@ -129,22 +121,22 @@ static void test_defaults_unknown_ids_and_sizes(void)
     }
     for (k = 0; k < 3; k++) {
         f.ignore = unknown[k];
-        TEST_ASSERT_EQUAL_INT(3, cc_world_query_box_filtered(w, v2(-20, -20), v2(20, 20), &f, ids, 4));
+        TEST_ASSERT_EQUAL_INT(3, cc_world_query_box_filtered(w, tw_vec2(-20, -20), tw_vec2(20, 20), &f, ids, 4));
     }
     memset(&h, 0x3C, sizeof h);
     untouched = h;
     f.struct_size = offsetof(cc_query_filter, ignore);
-    TEST_ASSERT_EQUAL_INT(CC_ERR_VERSION, cc_world_cast_circle_filtered(w, v2(0, 0), 1.0, v2(20, 0), &f, &h));
+    TEST_ASSERT_EQUAL_INT(CC_ERR_VERSION, cc_world_cast_circle_filtered(w, tw_vec2(0, 0), 1.0, tw_vec2(20, 0), &f, &h));
     TEST_ASSERT_EQUAL_MEMORY(&untouched, &h, sizeof h);
     ids[0] = -7;
-    TEST_ASSERT_EQUAL_INT(CC_ERR_VERSION, cc_world_query_circle_filtered(w, v2(0, 0), 0.5, &f, ids, 4));
-    TEST_ASSERT_EQUAL_INT(CC_ERR_VERSION, cc_world_query_box_filtered(w, v2(-2, -2), v2(2, 2), &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(CC_ERR_VERSION, cc_world_query_circle_filtered(w, tw_vec2(0, 0), 0.5, &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(CC_ERR_VERSION, cc_world_query_box_filtered(w, tw_vec2(-2, -2), tw_vec2(2, 2), &f, ids, 4));
     TEST_ASSERT_EQUAL_INT(-7, ids[0]);
     f.struct_size = sizeof f + 16; /* a later header's filter: its unknown tail is not read */
     f.ignore = 0;
-    TEST_ASSERT_EQUAL_INT(0, cc_world_query_circle_filtered(w, v2(0, 0), 0.5, &f, ids, 4));
-    TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_cast_circle_filtered(NULL, v2(0, 0), 1.0, v2(1, 0), &f, &h));
-    TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_query_box_filtered(w, v2(2, 2), v2(-2, -2), &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(0, cc_world_query_circle_filtered(w, tw_vec2(0, 0), 0.5, &f, ids, 4));
+    TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_cast_circle_filtered(NULL, tw_vec2(0, 0), 1.0, tw_vec2(1, 0), &f, &h));
+    TEST_ASSERT_EQUAL_INT(CC_ERR_INVALID, cc_world_query_box_filtered(w, tw_vec2(2, 2), tw_vec2(-2, -2), &f, ids, 4));
     tw_free(&m);
 }
 
@@ -180,16 +172,16 @@ static void test_the_1_1_calls_are_the_filtered_ones(void)
         f.mask = mask;
         memset(&a, 0, sizeof a);
         memset(&b, 0, sizeof b);
-        TEST_ASSERT_EQUAL_INT(cc_world_cast_circle(w, v2(x, y), 0.25 * (k % 4), v2(30 - x, 17), mask, &a),
-                              cc_world_cast_circle_filtered(w, v2(x, y), 0.25 * (k % 4), v2(30 - x, 17), &f, &b));
+        TEST_ASSERT_EQUAL_INT(cc_world_cast_circle(w, tw_vec2(x, y), 0.25 * (k % 4), tw_vec2(30 - x, 17), mask, &a),
+                              cc_world_cast_circle_filtered(w, tw_vec2(x, y), 0.25 * (k % 4), tw_vec2(30 - x, 17), &f, &b));
         TEST_ASSERT_EQUAL_MEMORY(&a, &b, sizeof a);
-        na = cc_world_query_circle(w, v2(x, y), 3.0, mask, ia, 200);
-        nb = cc_world_query_circle_filtered(w, v2(x, y), 3.0, &f, ib, 200);
+        na = cc_world_query_circle(w, tw_vec2(x, y), 3.0, mask, ia, 200);
+        nb = cc_world_query_circle_filtered(w, tw_vec2(x, y), 3.0, &f, ib, 200);
         TEST_ASSERT_EQUAL_INT(na, nb);
         if (na > 0)
             TEST_ASSERT_EQUAL_MEMORY(ia, ib, sizeof ia[0] * (size_t)na);
-        na = cc_world_query_box(w, v2(x, y), v2(x + 7, y + 3), mask, ia, 200);
-        nb = cc_world_query_box_filtered(w, v2(x, y), v2(x + 7, y + 3), &f, ib, 200);
+        na = cc_world_query_box(w, tw_vec2(x, y), tw_vec2(x + 7, y + 3), mask, ia, 200);
+        nb = cc_world_query_box_filtered(w, tw_vec2(x, y), tw_vec2(x + 7, y + 3), &f, ib, 200);
         TEST_ASSERT_EQUAL_INT(na, nb);
         if (na > 0)
             TEST_ASSERT_EQUAL_MEMORY(ia, ib, sizeof ia[0] * (size_t)na);

@@ -50,6 +50,14 @@ static inline cc_circle tw_circle(double x, double y, double vx, double vy, doub
     return c;
 }
 
+static inline cc_vec2 tw_vec2(double x, double y)
+{
+    cc_vec2 v;
+    v.x = x;
+    v.y = y;
+    return v;
+}
+
 static inline cc_segment tw_segment(double ax, double ay, double bx, double by)
 {
     cc_segment s;
