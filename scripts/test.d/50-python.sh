@@ -37,11 +37,12 @@ rm -rf "$out/dist" "$out/sdist-venv"
   exit 1
 }
 sdist=$(ls "$out"/dist/circlecollide-*.tar.gz)
+tar -tzf "$sdist" >"$out/dist/contents.txt"
 for f in csrc/CMakeLists.txt csrc/include/circlecollide.h csrc/src/CMakeLists.txt csrc/src/world/sources.cmake \
   csrc/cmake/circlecollideConfig.cmake.in; do
-  tar -tzf "$sdist" | grep -qx "circlecollide-[0-9.]*/$f" || { echo "50-python: the sdist lacks $f" >&2; exit 1; }
+  grep -qx "circlecollide-[0-9.]*/$f" "$out/dist/contents.txt" || { echo "50-python: the sdist lacks $f" >&2; exit 1; }
 done
-echo "sdist: $(basename "$sdist"), $(tar -tzf "$sdist" | grep -c /csrc/) C sources in csrc/"
+echo "sdist: $(basename "$sdist"), $(grep -c /csrc/ "$out/dist/contents.txt") files in csrc/"
 python3 -m venv "$out/sdist-venv"
 "$out/sdist-venv/bin/python" -m pip install -q --disable-pip-version-check "$sdist"
 "$out/sdist-venv/bin/python" "$root/bindings/python/tests/smoke.py"
