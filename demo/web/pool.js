@@ -336,7 +336,7 @@ function drawAim(cue) {
     // the pull as the mouse made it (thin), and the part of it that counts, along the cue
     const m = game.mouse || game.pullFrom, f = game.pullFrom;
     line(f.x, f.y, m.x, m.y, "rgba(255,255,255,0.5)", 1, [2, 3]);
-    line(f.x, f.y, f.x - game.aim.x * game.pull, f.y - game.aim.y * game.pull, "rgba(255,200,60,0.95)", 3);
+    line(f.x, f.y, f.x - game.aim.x * game.pull, f.y - game.aim.y * game.pull, "rgba(255,120,70,0.95)", 3);
     // the shot's direction and power: an arrow from the cue ball along the aim
     const len = 0.05 + 0.3 * frac, tx = cue.x + game.aim.x * len, ty = cue.y + game.aim.y * len;
     line(cue.x, cue.y, tx, ty, `hsl(${120 - 120 * frac}, 80%, 55%)`, 3);
