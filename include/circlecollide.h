@@ -25,7 +25,19 @@
  * Results      Functions return an int: CC_MISS (0), CC_HIT (1), CC_OVERLAP (2) for tests,
  *              CC_OK (0) for actions, CC_EVENT_LIMIT (3) for a world step cut short; negative
  *              values are errors (CC_ERR_*). New codes get new values, so switch with a
- *              default. cc_result_string() names every code.
+ *              default. cc_result_string() names every code (0 is both CC_OK and CC_MISS: its
+ *              text says what it means for an action and for a test).
+ *              1.2 names two causes that 1.0 and 1.1 reported as CC_ERR_INVALID: CC_ERR_RANGE
+ *              (a value beyond a documented limit) and CC_ERR_BUSY (a call that changes a
+ *              world, made from inside one of its callbacks). A world gives them only to a
+ *              caller that can know them: one whose cc_world_def reaches past 1.1's last field
+ *              (period), i.e. whose struct_size says it was compiled against the 1.2 header or
+ *              a later one; cc_world_size and cc_world_init judge the def they are given the
+ *              same way. A world made from a 1.0 or 1.1 def (as a program built against those
+ *              headers makes it) returns CC_ERR_INVALID in those cases, as it always did. A
+ *              program recompiled against 1.2 that compared such a result with CC_ERR_INVALID
+ *              should compare it with < 0, or handle the new codes. Functions that take no def
+ *              (the pair functions, cc_sweep_many) keep CC_ERR_INVALID for every bad input.
  * Untouched    On any error and on CC_MISS, every output argument is left exactly as it was
  *              (bit for bit). Bad input is reported, never undefined behaviour.
  * Batches      A call that takes an array of inputs (cc_world_add_circles, 1.2) checks all of
@@ -92,6 +104,12 @@ CC_API const char *cc_version_string(void);
 #define CC_ERR_FULL (-3)      /* the world holds max_circles circles or max_segments segments */
 #define CC_ERR_MEMORY (-4)    /* memory given to cc_world_init is NULL, too small or misaligned */
 #define CC_ERR_VERSION (-5)   /* a struct_size the library does not know (too small) */
+/* 1.2, for a world made from a 1.2 def (see Results in CONVENTIONS; else CC_ERR_INVALID): */
+#define CC_ERR_RANGE (-6) /* a value beyond a documented limit: a capacity above 2^26, a period not
+                             wider than def.cell_size, a circle too wide for the world's period, a
+                             step whose world time or paths would leave what the world allows */
+#define CC_ERR_BUSY (-7)  /* a call that changes a world, made from inside its contact or sensor
+                             callback: record what you need, act after that call returns */
 
 /* A static English name for a code ("CC_HIT: ..."); unknown codes give "unknown result code". */
 CC_API const char *cc_result_string(int code);
@@ -372,9 +390,10 @@ typedef struct cc_contact_event {
  * pair is pushed apart and, when it approaches, given its impulse at once). No other call fires
  * it (nor on_sensor: see "Per-body properties"). It may read the world (get_circle, get_circles,
  * time, stats, props, queries, casts, hash) but not change it: add, set, remove, add_segment,
- * step and the props setters called from inside return CC_ERR_INVALID and do nothing, whichever
- * call fired it (the world fuzzer tries each from both callbacks). Record what you need and act on it after that call returns (e.g. remove a
- * pocketed ball after the step). */
+ * step and the props setters called from inside return CC_ERR_BUSY (CC_ERR_INVALID in a world
+ * made from a 1.0 or 1.1 def) and do nothing, whichever call fired it (the world fuzzer tries
+ * each from both callbacks). Record what you need and act on it after that call returns (e.g.
+ * remove a pocketed ball after the step). */
 typedef void (*cc_contact_fn)(const cc_contact_event *event, void *user);
 
 /* Passed to the sensor callback when a circle begins or stops overlapping a sensor circle (see
@@ -399,7 +418,8 @@ typedef void (*cc_sensor_fn)(const cc_sensor_event *event, void *user);
 /* Fill with cc_world_def_init, then change what you need. struct_size comes first so that a
  * library newer than the caller's header uses defaults for the fields the caller lacks; every
  * def must reach at least up to and including restitution. Capacities are at most 2^26 (and
- * small enough that the world's size fits in a size_t). */
+ * small enough that the world's size fits in a size_t); beyond, cc_world_init says
+ * CC_ERR_RANGE (for a 1.2 def; see Results in CONVENTIONS). */
 typedef struct cc_world_def {
     size_t struct_size;       /* sizeof(cc_world_def) as the caller compiled it */
     int max_circles;          /* capacity for circles, >= 0 (default 64) */
@@ -444,15 +464,17 @@ CC_API size_t cc_world_size(const cc_world_def *def);
 
 /* Builds an empty world at time 0 inside memory[0, bytes). Never writes outside it, never
  * allocates, keeps no pointer into any other caller memory. Returns the world (== memory) and
- * *status = CC_OK, or NULL and *status = CC_ERR_INVALID (bad def), CC_ERR_VERSION (struct_size
- * too small to be a def), CC_ERR_MEMORY (memory NULL, misaligned or bytes too few); a failed
- * call writes nothing into memory. status may be NULL. To discard a world, stop using its
+ * *status = CC_OK, or NULL and *status = CC_ERR_INVALID (bad def), CC_ERR_RANGE (a 1.2 def
+ * whose capacity exceeds 2^26, or whose period is not wider than its cell_size), CC_ERR_VERSION
+ * (struct_size too small to be a def), CC_ERR_MEMORY (memory NULL, misaligned or bytes too few);
+ * a failed call writes nothing into memory. status may be NULL. To discard a world, stop using its
  * memory. */
 CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *def, int *status);
 
 /* Adds a circle whose state c holds at the current world time. Returns its id (>= 0, stable for
- * its lifetime; removed ids may be reused), CC_ERR_FULL, or CC_ERR_INVALID (NULL, invalid
- * circle, or called from the contact callback). See "Overlaps" above for a circle added on top
+ * its lifetime; removed ids may be reused), CC_ERR_FULL, CC_ERR_INVALID (NULL, invalid circle),
+ * CC_ERR_RANGE (a circle too wide for the world's period) or CC_ERR_BUSY (called from a
+ * callback); a world made from a 1.0 or 1.1 def says CC_ERR_INVALID for the last two. See "Overlaps" above for a circle added on top
  * of others: in EXACT that may call the contact callback before this returns. */
 CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c);
 
@@ -460,28 +482,30 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c);
  * for c[0], c[1], ... in that order would do: the same ids, written to ids_out[0..n) when
  * ids_out is not NULL, the same overlaps resolved and callbacks fired, the same state after
  * (cc_world_hash). Returns n, or an error and adds none of them (see "Batches" above): the
- * first circle cc_world_add_circle would refuse decides, CC_ERR_INVALID for an invalid circle
- * (or one too wide for the period), CC_ERR_FULL for the first that finds the world full, and its
- * index is written to *failed (when failed is not NULL), -1 when no one circle is at fault (NULL
- * w, n < 0, c NULL with n > 0, or called from a callback). ids_out and, on success, failed are
+ * first circle cc_world_add_circle would refuse decides, with its code (CC_ERR_INVALID for an
+ * invalid circle, CC_ERR_RANGE for one too wide for the period, CC_ERR_FULL for the first that
+ * finds the world full), and its index is written to *failed (when failed is not NULL); -1 when
+ * no one circle is at fault (CC_ERR_INVALID for NULL w, n < 0 or c NULL with n > 0;
+ * CC_ERR_BUSY when called from a callback). ids_out and, on success, failed are
  * left untouched otherwise. One call for a whole scene: a binding crosses its FFI once. (1.2) */
 CC_API int cc_world_add_circles(cc_world *w, const cc_circle *c, int n, int *ids_out, int *failed);
 
 /* Adds a static wall (a == b: a point). Returns its id (0, 1, ... in order of addition),
- * CC_ERR_FULL or CC_ERR_INVALID. Walls cannot be removed. */
+ * CC_ERR_FULL, CC_ERR_INVALID or CC_ERR_BUSY (from a callback). Walls cannot be removed. */
 CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s);
 
-/* Removes a circle (a pocketed ball); other ids are unchanged. CC_OK, CC_ERR_NOT_FOUND or
- * CC_ERR_INVALID (NULL w, or called from the contact callback). */
+/* Removes a circle (a pocketed ball); other ids are unchanged. CC_OK, CC_ERR_NOT_FOUND,
+ * CC_ERR_INVALID (NULL w) or CC_ERR_BUSY (called from a callback). */
 CC_API int cc_world_remove_circle(cc_world *w, int id);
 
 /* Advances world time by dt >= 0 in the world's mode. Returns CC_OK; CC_EVENT_LIMIT when an
  * EXACT step processed max_events events and stopped early (the world is consistent, its time is that
  * of the last event processed, and another call continues); CC_ERR_INVALID for dt < 0, NaN or
- * Inf, a world time that would overflow, a step along whose straight path (p + v dt from now)
- * a circle would pass 2^1017 (about 1.4e306) in either coordinate, where the arithmetic would
- * overflow, a SWEPT step of a periodic world that would carry a circle half a period (see
- * "Periodic boxes"), or a call from the contact callback (nothing changes). dt = 0 resolves pending
+ * Inf; CC_ERR_RANGE for a world time that would overflow, a step along whose straight path
+ * (p + v dt from now) a circle would pass 2^1017 (about 1.4e306) in either coordinate, where the
+ * arithmetic would overflow, or a SWEPT step of a periodic world that would carry a circle half
+ * a period (see "Periodic boxes"); CC_ERR_BUSY for a call from a callback (CC_ERR_INVALID for
+ * both in a world made from a 1.0 or 1.1 def); nothing changes on any of them. dt = 0 resolves pending
  * overlaps and the impacts due now. Those limits cost O(1) per step, not a look at every circle:
  * the world keeps bounds on its circles' coordinates and speeds, and looks at each circle only
  * when the bounds come within a factor 4/3 of 2^1017 or reach half a period, a look that also
@@ -493,7 +517,8 @@ CC_API int cc_world_step(cc_world *w, double dt);
 CC_API int cc_world_get_circle(const cc_world *w, int id, cc_circle *out);
 
 /* Replaces a circle's state at the current world time (position, velocity, radius and mass may
- * all change; the id stays). CC_OK, CC_ERR_NOT_FOUND, CC_ERR_INVALID (as add). Like add, in EXACT
+ * all change; the id stays). CC_OK, CC_ERR_NOT_FOUND, CC_ERR_INVALID, CC_ERR_RANGE or
+ * CC_ERR_BUSY (as add). Like add, in EXACT
  * it may call the contact callback before it returns. */
 CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c);
 
@@ -511,11 +536,11 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  * crossing the edge keeps its predicted impacts (EXACT finds them through the images of its
  * neighbours' cells). Periodic in x and open in y, with walls, is a channel. Each period must be
  * at least twice the largest circle diameter plus a cell (1.0625 diameters, or def.cell_size):
- * a circle too wide for it is CC_ERR_INVALID. Walls are not repeated: along a periodic axis a
+ * a circle too wide for it is CC_ERR_RANGE (CC_ERR_INVALID for a 1.0 or 1.1 def). Walls are not repeated: along a periodic axis a
  * wall should span the period (a channel's sides, reaching a radius beyond both ends) or keep
  * away from its edges. A periodic world always has a grid, also with max_circles <= 32. SWEPT
  * and DISCRETE take the nearest image of each pair: a step must not carry a circle half a
- * period (SWEPT refuses such a step: CC_ERR_INVALID, nothing changes). Casts see every image
+ * period (SWEPT refuses such a step: CC_ERR_RANGE, nothing changes). Casts see every image
  * along their path; queries report each circle once (its image nearest the query; a query box
  * as wide as the period holds every coordinate along it). Beyond about 1e15 periods from the
  * origin a coordinate has lost its place within the period: a cast from there looks at every
@@ -638,9 +663,9 @@ CC_API int cc_world_get_circle_props(const cc_world *w, int id, cc_circle_props 
 
 /* Sets the properties of circle id from the whole fields of p that fit in p->struct_size (the
  * others keep their current value), at the current world time. CC_OK; CC_ERR_INVALID (NULL, a
- * value out of range, or called from a callback) or CC_ERR_VERSION (struct_size too small), and
- * nothing changed; CC_ERR_NOT_FOUND; CC_ERR_FULL when it would make a sensor of the world's
- * CC_MAX_SENSORS + 1st. */
+ * value out of range), CC_ERR_BUSY (called from a callback) or CC_ERR_VERSION (struct_size too
+ * small), and nothing changed; CC_ERR_NOT_FOUND; CC_ERR_FULL when it would make a sensor of the
+ * world's CC_MAX_SENSORS + 1st. */
 CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props *p);
 
 /* The same for wall id. */
@@ -686,6 +711,38 @@ CC_API int cc_world_query_circle(const cc_world *w, cc_vec2 c, double radius, ui
  * exactly: a circle whose distance from the box equals its radius counts). lo <= hi in both
  * coordinates, all finite, else CC_ERR_INVALID. */
 CC_API int cc_world_query_box(const cc_world *w, cc_vec2 lo, cc_vec2 hi, uint32_t mask, int *ids, int capacity);
+
+/* Query filters (1.2): which circles and walls a cast or query looks at. The three functions
+ * above take a mask only; their _filtered twins take a filter, so that a cast from a circle of
+ * the world (the cue ball's aiming line) can leave that circle out:
+ *
+ *     cc_query_filter f = CC_QUERY_FILTER_DEFAULT;
+ *     f.ignore = cue;
+ *     r = cc_world_cast_circle_filtered(w, cue_pos, radius, d, &f, &hit);
+ *
+ * Set struct_size (CC_QUERY_FILTER_DEFAULT does) so that a later library knows which fields
+ * the caller has; a filter whose struct_size does not reach `ignore` is CC_ERR_VERSION. A NULL
+ * filter is the default: every category, nothing left out. cc_world_cast_circle(w, p, radius,
+ * d, mask, out) is cc_world_cast_circle_filtered with {mask, ignore -1}, bit for bit, and so
+ * for the queries. */
+typedef struct cc_query_filter {
+    size_t struct_size; /* sizeof(cc_query_filter) as the caller compiled it */
+    uint32_t mask;      /* only circles (and walls) whose category meets it (default 0xFFFFFFFF) */
+    int ignore;         /* the id of a circle to leave out, or -1 (default): none. An id not in
+                           use leaves nothing out. Walls are never left out. */
+} cc_query_filter;
+
+/* The default filter, as an initializer: every category, nothing left out. */
+#define CC_QUERY_FILTER_DEFAULT {sizeof(cc_query_filter), 0xFFFFFFFFu, -1}
+
+/* cc_world_cast_circle, cc_world_query_circle and cc_world_query_box with a filter (1.2): the
+ * same results, codes and rules, the circle named by filter->ignore never hit nor listed. */
+CC_API int cc_world_cast_circle_filtered(const cc_world *w, cc_vec2 p, double radius, cc_vec2 d,
+                                         const cc_query_filter *filter, cc_cast_hit *out);
+CC_API int cc_world_query_circle_filtered(const cc_world *w, cc_vec2 c, double radius, const cc_query_filter *filter,
+                                          int *ids, int capacity);
+CC_API int cc_world_query_box_filtered(const cc_world *w, cc_vec2 lo, cc_vec2 hi, const cc_query_filter *filter,
+                                       int *ids, int capacity);
 
 /* A 64-bit hash of the simulation state: the world time, every live circle's id, position and
  * velocity (as cc_world_get_circle gives them), radius, mass and properties, its sensor overlaps,

@@ -36,7 +36,11 @@ library=()
 for f in "${public[@]}"; do library+=("--export=$f"); done
 
 sizes=$out/sizes.txt
-[ $sizes_too = 1 ] && printf '%-44s %9s %9s\n' "module" "bytes" "gzip -9" >"$sizes"
+figures=$out/figures.txt # the same as `name value` lines, for scripts/doc_figures.py
+if [ $sizes_too = 1 ]; then
+  printf '%-44s %9s %9s\n' "module" "bytes" "gzip -9" >"$sizes"
+  printf 'wasm.functions %d\nwasm.pair_functions %d\n' "${#public[@]}" $(( ${#pair[@]} )) >"$figures"
+fi
 opts=(O2)
 [ $sizes_too = 1 ] && opts=(O2 Os)
 for opt in "${opts[@]}"; do
@@ -56,8 +60,9 @@ for opt in "${opts[@]}"; do
       library) what="library (all ${#public[@]} cc_ functions)";;
       page) what="page module (library + glue.c, calls.c)";;
     esac
-    printf '%-44s %9d %9d\n' "$what, -$opt" "$(stat -c %s "$out/$m-$opt.wasm")" \
-      "$(gzip -9 -c "$out/$m-$opt.wasm" | wc -c)" >>"$sizes"
+    bytes=$(stat -c %s "$out/$m-$opt.wasm") gz=$(gzip -9 -c "$out/$m-$opt.wasm" | wc -c)
+    printf '%-44s %9d %9d\n' "$what, -$opt" "$bytes" "$gz" >>"$sizes"
+    printf 'wasm.%s.%s.bytes %d\nwasm.%s.%s.gzip %d\n' "$m" "$opt" "$bytes" "$m" "$opt" "$gz" >>"$figures"
   done
 done
 cp "$out/page-O2.wasm" "$root/demo/web/circlecollide.wasm"

@@ -6,11 +6,21 @@
 #include "circlecollide.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define TW_CANARY 64 /* bytes checked after the world's buffer */
+
+/* What a world made from this header's def (cc_world_def_init) answers for a cause that 1.2
+ * names (CC_ERR_RANGE, CC_ERR_BUSY): the code itself once the def reaches past 1.1's last field,
+ * CC_ERR_INVALID before (the header's Results), so that the tests hold on either side of the
+ * def's 1.2 fields. */
+static inline int tw_code(int code)
+{
+    return sizeof(cc_world_def) > offsetof(cc_world_def, period) + sizeof(cc_vec2) ? code : CC_ERR_INVALID;
+}
 
 /* A world in malloc'ed memory, aligned to 16 bytes by hand (C99 has no aligned_alloc), with
  * TW_CANARY bytes of 0xA5 after exactly cc_world_size(def) bytes. */
@@ -48,6 +58,14 @@ static inline cc_circle tw_circle(double x, double y, double vx, double vy, doub
     c.radius = r;
     c.mass = m;
     return c;
+}
+
+static inline cc_vec2 tw_vec2(double x, double y)
+{
+    cc_vec2 v;
+    v.x = x;
+    v.y = y;
+    return v;
 }
 
 static inline cc_segment tw_segment(double ax, double ay, double bx, double by)

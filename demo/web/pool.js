@@ -35,6 +35,7 @@ const canvas = document.getElementById("table");
 const ctx = canvas.getContext("2d");
 const scoreEl = document.getElementById("score");
 const statusEl = document.getElementById("status");
+const powerEl = document.getElementById("power");
 const versionEl = document.getElementById("version");
 const scale = canvas.width / (L + 2 * MARGIN);
 const sx = (x) => (x + MARGIN) * scale;
@@ -58,7 +59,9 @@ function newGame() {
     aim: { x: 1, y: 0 },
     mouse: null,
     pullFrom: null,
-    pull: 0,
+    pull: 0, // the pull's component against the aim, metres (0 .. MAX_PULL)
+    note: "", // why the last release shot nothing, until the next press
+    lastShot: null, // {speed, x, y}: the last shot's speed and direction
     steps: 0,
     movedBalls: 0,
   };
@@ -146,6 +149,7 @@ function shoot(speed) {
   if (!c) return;
   world.setCircle(game.cue, { x: c.x, y: c.y, vx: game.aim.x * speed, vy: game.aim.y * speed,
     radius: R, mass: M });
+  game.lastShot = { speed, x: game.aim.x, y: game.aim.y };
   game.shots++;
   game.state = "moving";
   updateScore();
@@ -192,13 +196,37 @@ function aimAt(p) {
 }
 
 // (each handler waits for the module: before it loads there is no game)
+// The pull: the mouse's way from where it was pressed. Only its component against the aim (back
+// along the cue) gives power; the aim stays where the press put it. Read each move and shown
+// while pulling (the stick, the bar, #power), so that a pull sideways or forward says why it
+// gives little or none instead of doing nothing silently.
+function pullOf(p) {
+  const dx = p.x - game.pullFrom.x, dy = p.y - game.pullFrom.y;
+  const back = -(dx * game.aim.x + dy * game.aim.y); // the component against the aim
+  const pull = Math.max(0, Math.min(MAX_PULL, back));
+  return { dx, dy, back, pull, speed: MAX_SPEED * pull / MAX_PULL };
+}
+
+function powerText() {
+  if (game.state !== "pull") return game.note;
+  const q = pullOf(game.mouse || game.pullFrom);
+  const deg = Math.round(Math.atan2(game.aim.y, game.aim.x) * 180 / Math.PI);
+  if (q.back <= 0)
+    return `power 0 m/s: pull back along the cue (away from the aim at ${deg}°) for power`;
+  const off = Math.hypot(q.dx, q.dy) > 1e-9 ? Math.round(Math.acos(Math.min(1, q.back / Math.hypot(q.dx, q.dy))) * 180 / Math.PI) : 0;
+  return `power ${q.speed.toFixed(1)} m/s (${Math.round(100 * q.pull / MAX_PULL)} %) toward ${deg}°` +
+    (off > 10 ? ` · the pull is ${off}° off the cue: only its part along the cue counts` : "");
+}
+
 canvas.addEventListener("mousedown", (ev) => {
   if (!game || game.state !== "aim" || ev.button !== 0) return;
   const p = tablePoint(ev);
   aimAt(p);
   game.state = "pull";
   game.pullFrom = p;
+  game.mouse = p;
   game.pull = 0;
+  game.note = "";
   ev.preventDefault();
 });
 
@@ -206,21 +234,20 @@ window.addEventListener("mousemove", (ev) => {
   if (!game) return;
   const p = tablePoint(ev);
   game.mouse = p;
-  if (game.state === "aim") {
-    aimAt(p);
-  } else if (game.state === "pull") {
-    // the pull: how far the mouse went back, against the aim
-    const back = -((p.x - game.pullFrom.x) * game.aim.x + (p.y - game.pullFrom.y) * game.aim.y);
-    game.pull = Math.max(0, Math.min(MAX_PULL, back));
-  }
+  if (game.state === "aim") aimAt(p);
+  else if (game.state === "pull") game.pull = pullOf(p).pull;
 });
 
 window.addEventListener("mouseup", (ev) => {
   if (!game || game.state !== "pull" || ev.button !== 0) return;
   const speed = MAX_SPEED * game.pull / MAX_PULL;
   game.pull = 0;
-  if (speed > 0.05) shoot(speed);
-  else game.state = "aim";
+  if (speed > 0.05) {
+    shoot(speed);
+  } else {
+    game.state = "aim";
+    game.note = "no shot: pull back along the cue, away from the aim, for power";
+  }
 });
 
 document.getElementById("reset").addEventListener("click", () => game && newGame());
@@ -301,6 +328,21 @@ function drawAim(cue) {
     ctx.fillRect(12, canvas.height - 26, 204, 16);
     ctx.fillStyle = `hsl(${120 - 120 * frac}, 80%, 50%)`;
     ctx.fillRect(14, canvas.height - 24, 200 * frac, 12);
+    ctx.fillStyle = "#fff";
+    ctx.font = "13px sans-serif";
+    ctx.textAlign = "left";
+    ctx.textBaseline = "middle";
+    ctx.fillText(`${(MAX_SPEED * frac).toFixed(1)} m/s`, 224, canvas.height - 18);
+    // the pull as the mouse made it (thin), and the part of it that counts, along the cue
+    const m = game.mouse || game.pullFrom, f = game.pullFrom;
+    line(f.x, f.y, m.x, m.y, "rgba(255,255,255,0.5)", 1, [2, 3]);
+    line(f.x, f.y, f.x - game.aim.x * game.pull, f.y - game.aim.y * game.pull, "rgba(255,120,70,0.95)", 3);
+    // the shot's direction and power: an arrow from the cue ball along the aim
+    const len = 0.05 + 0.3 * frac, tx = cue.x + game.aim.x * len, ty = cue.y + game.aim.y * len;
+    line(cue.x, cue.y, tx, ty, `hsl(${120 - 120 * frac}, 80%, 55%)`, 3);
+    const ax = -game.aim.y * 0.015, ay = game.aim.x * 0.015;
+    line(tx, ty, tx - game.aim.x * 0.03 + ax, ty - game.aim.y * 0.03 + ay, `hsl(${120 - 120 * frac}, 80%, 55%)`, 3);
+    line(tx, ty, tx - game.aim.x * 0.03 - ax, ty - game.aim.y * 0.03 - ay, `hsl(${120 - 120 * frac}, 80%, 55%)`, 3);
   }
 }
 
@@ -331,6 +373,7 @@ function draw() {
   }
   const cue = cueBall();
   if (cue && (game.state === "aim" || game.state === "pull")) drawAim(cue);
+  powerEl.textContent = powerText();
   statusEl.textContent = game.state === "moving"
     ? `rolling… t = ${world.time().toFixed(2)} s`
     : game.potted.length === 15 ? "table cleared: press reset for a new rack"
@@ -367,6 +410,13 @@ async function main() {
       return { x: r.left + sx(x) * r.width / canvas.width, y: r.top + sy(y) * r.height / canvas.height };
     },
     potted: () => game.potted.slice(),
+    // the pull now (state "pull"): its component against the aim, the speed it gives, the aim
+    pull: () => game.state !== "pull" ? null : Object.assign(pullOf(game.mouse || game.pullFrom),
+      { aim: { ...game.aim } }),
+    lastShot: () => game.lastShot,
+    fouls: () => game.fouls,
+    worldBytes: () => world.bytes,
+    powerText: () => powerEl.textContent,
     steps: () => game.steps,
     time: () => world.time(),
     balls: () => world.circles().filter((c) => game.numbers.has(c.id)),

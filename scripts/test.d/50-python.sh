@@ -24,15 +24,25 @@ cd "$out/run"
 CIRCLECOLLIDE_HEADER=$root/include/circlecollide.h \
   "$py" -m pytest -q -p no:cacheprovider "$root/bindings/python/tests"
 
-# The sdist: built from a staging copy that holds the C sources (bindings/python/build_dist.sh),
-# installed by pip into a fresh venv (pip builds the library from the sdist alone, fetching only
-# the build backend from the registry), then a smoke test from outside the source tree.
+# The sdist, by the standard command (python -m build: pyproject.toml's sdist.force-include puts
+# the C sources into its csrc/), checked to hold them, installed by pip into a fresh venv (pip
+# builds the library from the sdist alone, fetching only the build backend from the registry),
+# then a smoke test from outside the source tree. The wheel above was built from the checkout
+# itself, as `pip install ./bindings/python` and pip's git+...#subdirectory=bindings/python
+# installs build it (in a fresh clone, as CI's: only what git holds).
 "$py" -m pip install -q --disable-pip-version-check build
 rm -rf "$out/dist" "$out/sdist-venv"
-"$root/bindings/python/build_dist.sh" "$out/dist" "$py" --sdist >"$out/dist.log" 2>&1 || {
+"$py" -m build --sdist --outdir "$out/dist" "$root/bindings/python" >"$out/dist.log" 2>&1 || {
   cat "$out/dist.log" >&2
   exit 1
 }
+sdist=$(ls "$out"/dist/circlecollide-*.tar.gz)
+tar -tzf "$sdist" >"$out/dist/contents.txt"
+for f in csrc/CMakeLists.txt csrc/include/circlecollide.h csrc/src/CMakeLists.txt csrc/src/world/sources.cmake \
+  csrc/cmake/circlecollideConfig.cmake.in; do
+  grep -qx "circlecollide-[0-9.]*/$f" "$out/dist/contents.txt" || { echo "50-python: the sdist lacks $f" >&2; exit 1; }
+done
+echo "sdist: $(basename "$sdist"), $(grep -c /csrc/ "$out/dist/contents.txt") files in csrc/"
 python3 -m venv "$out/sdist-venv"
-"$out/sdist-venv/bin/python" -m pip install -q --disable-pip-version-check "$out"/dist/circlecollide-*.tar.gz
+"$out/sdist-venv/bin/python" -m pip install -q --disable-pip-version-check "$sdist"
 "$out/sdist-venv/bin/python" "$root/bindings/python/tests/smoke.py"

@@ -3,6 +3,7 @@
  * (longer for a wide cast), each piece's cells searched through the grid (region.h), and the walk
  * stops once a hit lies before the end of the piece searched: a circle hit at t lies within the
  * cast radius plus its own of the path's point at t, so it is found with the piece holding t. */
+#include "filter.h"
 #include "region.h"
 #include "walls.h"
 
@@ -16,6 +17,7 @@ typedef struct cc__cast {
     cc_vec2 p, d;
     double r;
     uint32_t mask;
+    int ignore; /* the storage index of the circle the filter leaves out, or -1 */
     /* the best so far: (t, touch, wall, id) smallest first */
     double t;
     int touch, wall, id;
@@ -54,7 +56,7 @@ static void cc__cast_visit(void *ctx, int j, double sx, double sy)
     cc_vec2 q, dp, n;
     double t, R = c->r + b->r;
     int eL, r, id;
-    if (!cc__category_meets(w, j, c->mask) || CC__CARR(w, cc__props, off_props)[j].sensor >= 0)
+    if (j == c->ignore || !cc__category_meets(w, j, c->mask) || CC__CARR(w, cc__props, off_props)[j].sensor >= 0)
         return;
     cc__body_pos(w, j, w->now, &q.x, &q.y);
     q.x += sx; /* periodic: the image the path meets here */
@@ -141,6 +143,13 @@ static void cc__cast_walls(cc__cast *c)
 CC_API int cc_world_cast_circle(const cc_world *w, cc_vec2 p, double radius, cc_vec2 d, uint32_t mask,
                                 cc_cast_hit *out)
 {
+    cc_query_filter f = cc__filter_of_mask(mask);
+    return cc_world_cast_circle_filtered(w, p, radius, d, &f, out);
+}
+
+CC_API int cc_world_cast_circle_filtered(const cc_world *w, cc_vec2 p, double radius, cc_vec2 d,
+                                         const cc_query_filter *filter, cc_cast_hit *out)
+{
     cc__cast c;
     double len, piece;
     long k, pieces;
@@ -148,11 +157,12 @@ CC_API int cc_world_cast_circle(const cc_world *w, cc_vec2 p, double radius, cc_
         !(radius >= 0.0) || !isfinite(radius))
         return CC_ERR_INVALID;
     memset(&c, 0, sizeof c);
+    if (cc__filter_read(w, filter, &c.mask, &c.ignore) != CC_OK)
+        return CC_ERR_VERSION;
     c.w = w;
     c.p = p;
     c.d = d;
     c.r = radius;
-    c.mask = mask;
     c.t = HUGE_VAL;
     c.touch = c.wall = 1;
     c.id = INT32_MAX;

@@ -2,6 +2,7 @@
  * filters that decide which pairs interact, and the restitution of a contact made from its two
  * sides'. A world whose bodies keep their defaults never reads any of this (w->features). */
 #include "world_internal.h"
+#include "codes.h"
 
 #include <stddef.h>
 
@@ -118,8 +119,10 @@ CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props 
     cc__props *p;
     cc_circle_props q;
     int k, was_sensor, slot = -1;
-    if (!cc__world_ok(w) || in == NULL || w->busy)
+    if (!cc__world_ok(w) || in == NULL)
         return CC_ERR_INVALID;
+    if (w->busy)
+        return cc__world_code(w, CC_ERR_BUSY);
     if (in->struct_size < CC__END(cc_circle_props, restitution))
         return CC_ERR_VERSION;
     if ((k = cc__live_index(w, id)) < 0)
@@ -190,8 +193,10 @@ CC_API int cc_world_set_segment_props(cc_world *w, int id, const cc_segment_prop
 {
     cc__segment_props *p;
     cc_segment_props q;
-    if (!cc__world_ok(w) || in == NULL || w->busy)
+    if (!cc__world_ok(w) || in == NULL)
         return CC_ERR_INVALID;
+    if (w->busy)
+        return cc__world_code(w, CC_ERR_BUSY);
     if (in->struct_size < CC__END(cc_segment_props, restitution))
         return CC_ERR_VERSION;
     if (id < 0 || id >= w->n_segments)

@@ -1,5 +1,6 @@
 /* The overlap queries (issue 14): the circles that overlap a disc or meet a box, found through
  * the grid (region.h), tested exactly, and written in increasing id order. */
+#include "filter.h"
 #include "region.h"
 
 #include "precision_double.h"
@@ -13,6 +14,7 @@ typedef struct cc__query {
     int box;
     int full[2];              /* periodic axis k that the box spans a whole period of: every coordinate */
     uint32_t mask;
+    int ignore;               /* the storage index of the circle the filter leaves out, or -1 */
     int *ids, capacity, count;
 } cc__query;
 
@@ -89,7 +91,7 @@ static void cc__query_visit(void *ctx, int j, double sx, double sy)
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[j];
     double x, y, dx, dy;
     (void)sx, (void)sy;
-    if (!cc__category_meets(w, j, q->mask))
+    if (j == q->ignore || !cc__category_meets(w, j, q->mask))
         return;
     cc__body_pos(w, j, w->now, &x, &y);
     if (w->features & CC__F_PERIODIC) { /* the image nearest the query (each circle once) */
@@ -150,10 +152,19 @@ static int cc__query_ok(const cc_world *w, const int *ids, int capacity)
 
 CC_API int cc_world_query_circle(const cc_world *w, cc_vec2 c, double radius, uint32_t mask, int *ids, int capacity)
 {
+    cc_query_filter f = cc__filter_of_mask(mask);
+    return cc_world_query_circle_filtered(w, c, radius, &f, ids, capacity);
+}
+
+CC_API int cc_world_query_circle_filtered(const cc_world *w, cc_vec2 c, double radius, const cc_query_filter *filter,
+                                          int *ids, int capacity)
+{
     cc__query q;
     if (!cc__query_ok(w, ids, capacity) || !isfinite(c.x) || !isfinite(c.y) || !(radius >= 0.0) || !isfinite(radius))
         return CC_ERR_INVALID;
     memset(&q, 0, sizeof q);
+    if (cc__filter_read(w, filter, &q.mask, &q.ignore) != CC_OK)
+        return CC_ERR_VERSION;
     q.w = w;
     q.x0 = q.x1 = c.x;
     q.y0 = q.y1 = c.y;
@@ -161,7 +172,6 @@ CC_API int cc_world_query_circle(const cc_world *w, cc_vec2 c, double radius, ui
     q.cx = q.x0;
     q.cy = q.y0;
     q.r = radius;
-    q.mask = mask;
     q.ids = ids;
     q.capacity = capacity;
     return cc__query_run(&q);
@@ -169,11 +179,20 @@ CC_API int cc_world_query_circle(const cc_world *w, cc_vec2 c, double radius, ui
 
 CC_API int cc_world_query_box(const cc_world *w, cc_vec2 lo, cc_vec2 hi, uint32_t mask, int *ids, int capacity)
 {
+    cc_query_filter f = cc__filter_of_mask(mask);
+    return cc_world_query_box_filtered(w, lo, hi, &f, ids, capacity);
+}
+
+CC_API int cc_world_query_box_filtered(const cc_world *w, cc_vec2 lo, cc_vec2 hi, const cc_query_filter *filter,
+                                       int *ids, int capacity)
+{
     cc__query q;
     if (!cc__query_ok(w, ids, capacity) || !isfinite(lo.x) || !isfinite(lo.y) || !isfinite(hi.x) ||
         !isfinite(hi.y) || !(lo.x <= hi.x) || !(lo.y <= hi.y))
         return CC_ERR_INVALID;
     memset(&q, 0, sizeof q);
+    if (cc__filter_read(w, filter, &q.mask, &q.ignore) != CC_OK)
+        return CC_ERR_VERSION;
     q.w = w;
     q.box = 1;
     q.x0 = lo.x;
@@ -181,7 +200,6 @@ CC_API int cc_world_query_box(const cc_world *w, cc_vec2 lo, cc_vec2 hi, uint32_
     q.x1 = hi.x;
     q.y1 = hi.y;
     cc__query_to_period(&q);
-    q.mask = mask;
     q.ids = ids;
     q.capacity = capacity;
     return cc__query_run(&q);

@@ -2,6 +2,7 @@
  * to), the dispatch to the mode's stepper (exact.c, swept.c, discrete.c), and the counters the
  * steps keep (cc_world_get_stats). */
 #include "world_internal.h"
+#include "codes.h"
 
 #include <math.h>
 #include <string.h>
@@ -107,12 +108,16 @@ CC_API int cc_world_step(cc_world *w, double dt)
     int r;
     double now;
     uint64_t events;
-    if (!cc__world_ok(w) || w->busy || !(dt >= 0.0) || !isfinite(dt) || !isfinite(w->now + dt))
+    if (!cc__world_ok(w) || !(dt >= 0.0) || !isfinite(dt))
         return CC_ERR_INVALID;
+    if (w->busy)
+        return cc__world_code(w, CC_ERR_BUSY);
+    if (!isfinite(w->now + dt))
+        return cc__world_code(w, CC_ERR_RANGE);
     now = w->now;
     events = w->stats.events;
     if (!cc__step_quick(w, dt, (now + dt) - now) && !cc__step_allowed(w, dt))
-        return CC_ERR_INVALID;
+        return cc__world_code(w, CC_ERR_RANGE);
     w->busy = 1;
     if (w->mode == CC_MODE_EXACT)
         r = cc__step_exact(w, w->now + dt);

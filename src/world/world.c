@@ -2,6 +2,7 @@
  * from the caller's buffer, validation, ids, and the circle/segment accessors. Stepping lives
  * in exact.c, swept.c and discrete.c. */
 #include "world_internal.h"
+#include "codes.h"
 #include "walls.h"
 
 #include "precision_double.h"
@@ -82,12 +83,12 @@ size_t cc__whole_fields(size_t n, const size_t *ends, int count)
 }
 
 
-/* A period: 0 (open), or finite and wider than def.cell_size ("at least twice the largest
- * diameter plus a cell": the diameters are checked as circles arrive, cc__fits_period). */
-static int cc__period_ok(double p, double cell_hint)
-{
-    return p == 0.0 || (p > 0.0 && isfinite(p) && p > cell_hint);
-}
+/* A period: 0 (open), or finite and > 0. */
+static int cc__period_ok(double p) { return p == 0.0 || (p > 0.0 && isfinite(p)); }
+
+/* A period wider than def.cell_size ("at least twice the largest diameter plus a cell": the
+ * diameters are checked as circles arrive, cc__fits_period); 0 is an open axis. */
+static int cc__period_holds_cell(double p, double cell_hint) { return p == 0.0 || p > cell_hint; }
 
 /* The caller's def over our defaults: fields beyond its struct_size (and a field it cuts) keep
  * their default. */
@@ -100,19 +101,20 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
     cc__def_defaults(out);
     memcpy(out, in, cc__whole_fields(in->struct_size, cc__def_ends, (int)(sizeof cc__def_ends / sizeof cc__def_ends[0])));
     out->struct_size = sizeof *out;
-    if (out->max_circles < 0 || out->max_circles > CC__MAX_CAPACITY || out->max_segments < 0 ||
-        out->max_segments > CC__MAX_CAPACITY || out->mode < CC_MODE_EXACT || out->mode > CC_MODE_DISCRETE ||
+    if (out->max_circles < 0 || out->max_segments < 0 || out->mode < CC_MODE_EXACT || out->mode > CC_MODE_DISCRETE ||
         !(out->restitution >= 0.0 && out->restitution <= 1.0) ||
         !(out->rest_speed >= 0.0 && isfinite(out->rest_speed)) ||
         !(out->cell_size >= 0.0 && isfinite(out->cell_size)) || out->max_events == 0 ||
         !(out->rolling_decel >= 0.0 && isfinite(out->rolling_decel)) || out->restitution_mix < CC_MIX_MIN ||
-        out->restitution_mix > CC_MIX_MEAN || !cc__period_ok(out->period.x, out->cell_size) ||
-        !cc__period_ok(out->period.y, out->cell_size))
+        out->restitution_mix > CC_MIX_MEAN || !cc__period_ok(out->period.x) || !cc__period_ok(out->period.y))
         return CC_ERR_INVALID;
-    /* where size_t has 32 bits, the capacities must also leave the byte count representable */
-    if ((size_t)out->max_circles > (SIZE_MAX - 65536u) / 1024u ||
-        (size_t)out->max_segments > (SIZE_MAX - 65536u) / 1024u)
-        return CC_ERR_INVALID;
+    /* beyond the documented limits: the capacities (where size_t has 32 bits they must also leave
+     * the byte count representable), a period not wider than the cell it must hold */
+    if (out->max_circles > CC__MAX_CAPACITY || out->max_segments > CC__MAX_CAPACITY ||
+        (size_t)out->max_circles > (SIZE_MAX - 65536u) / 1024u ||
+        (size_t)out->max_segments > (SIZE_MAX - 65536u) / 1024u || !cc__period_holds_cell(out->period.x, out->cell_size) ||
+        !cc__period_holds_cell(out->period.y, out->cell_size))
+        return cc__code_for_def(in->struct_size, CC_ERR_RANGE);
     return CC_OK;
 }
 
@@ -252,7 +254,7 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
     }
     w->dirty = 1;
     w->large_head = -1;
-    w->stats.struct_size = sizeof w->stats;
+    cc__world_note_def(w, def->struct_size);
     (void)cc__layout(&d, w);
     {
         int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
@@ -358,11 +360,23 @@ static int cc__fits_period(const cc_world *w, const cc_circle *c)
     return 1;
 }
 
+/* What add and set refuse before anything changes: CC_OK or the code. */
+static int cc__put_refused(const cc_world *w, const cc_circle *c)
+{
+    if (!cc__world_ok(w) || !cc__circle_ok(c))
+        return CC_ERR_INVALID;
+    if (w->busy)
+        return cc__world_code(w, CC_ERR_BUSY);
+    if (!cc__fits_period(w, c))
+        return cc__world_code(w, CC_ERR_RANGE);
+    return CC_OK;
+}
+
 CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
 {
-    int id;
-    if (!cc__world_ok(w) || w->busy || !cc__circle_ok(c) || !cc__fits_period(w, c))
-        return CC_ERR_INVALID;
+    int id, r = cc__put_refused(w, c);
+    if (r != CC_OK)
+        return r;
     if (w->n_circles >= w->max_circles)
         return CC_ERR_FULL;
     if (w->free_top > 0) { /* the last removed id (it keeps its storage index), off the free stack */
@@ -387,15 +401,20 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
 CC_API int cc_world_add_circles(cc_world *w, const cc_circle *c, int n, int *ids_out, int *failed)
 {
     int i, id;
-    if (!cc__world_ok(w) || w->busy || n < 0 || (c == NULL && n > 0)) {
+    if (!cc__world_ok(w) || n < 0 || (c == NULL && n > 0)) {
         if (failed != NULL)
             *failed = -1;
         return CC_ERR_INVALID;
     }
+    if (w->busy) { /* no one circle is at fault */
+        if (failed != NULL)
+            *failed = -1;
+        return cc__world_code(w, CC_ERR_BUSY);
+    }
     for (i = 0; i < n; i++) {
-        int r = !cc__circle_ok(&c[i]) || !cc__fits_period(w, &c[i]) ? CC_ERR_INVALID
-                : i >= w->max_circles - w->n_circles              ? CC_ERR_FULL
-                                                                  : CC_OK;
+        int r = cc__put_refused(w, &c[i]);
+        if (r == CC_OK && i >= w->max_circles - w->n_circles)
+            r = CC_ERR_FULL;
         if (r != CC_OK) {
             if (failed != NULL)
                 *failed = i;
@@ -423,9 +442,9 @@ static void cc__unfile(cc_world *w, int id)
 
 CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c)
 {
-    int k;
-    if (!cc__world_ok(w) || w->busy || !cc__circle_ok(c) || !cc__fits_period(w, c))
-        return CC_ERR_INVALID;
+    int k, r = cc__put_refused(w, c);
+    if (r != CC_OK)
+        return r;
     if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
     cc__unfile(w, k);
@@ -436,8 +455,10 @@ CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c)
 CC_API int cc_world_remove_circle(cc_world *w, int id)
 {
     int k;
-    if (!cc__world_ok(w) || w->busy)
+    if (!cc__world_ok(w))
         return CC_ERR_INVALID;
+    if (w->busy)
+        return cc__world_code(w, CC_ERR_BUSY);
     if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
     cc__unfile(w, k);
@@ -452,8 +473,10 @@ CC_API int cc_world_remove_circle(cc_world *w, int id)
 
 CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s)
 {
-    if (!cc__world_ok(w) || w->busy || !cc__segment_ok(s))
+    if (!cc__world_ok(w) || !cc__segment_ok(s))
         return CC_ERR_INVALID;
+    if (w->busy)
+        return cc__world_code(w, CC_ERR_BUSY);
     if (w->n_segments >= w->max_segments)
         return CC_ERR_FULL;
     CC__ARR(w, cc_segment, off_seg)[w->n_segments] = *s;

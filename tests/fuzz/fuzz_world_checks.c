@@ -8,7 +8,8 @@
  *   byte 3  flags: bit 0 on_contact, bit 1 on_sensor, bit 2 periodic x, bit 3 periodic y,
  *           bit 4 a def of 1.0's size (the 1.1 fields hold garbage the library must ignore),
  *           bits 5-6 restitution_mix (with byte 4 bit 7: the invalid mix 4)
- *   byte 4  bits 0-6: which of rest_speed, cell_size, rolling_decel are nonzero; bit 7 see above
+ *   byte 4  bits 0-3: which of rest_speed, cell_size, rolling_decel are nonzero; bit 6: the def is
+ *           a later header's (struct_size past this one's: the 1.2 codes); bit 7 see above
  *   then    values: restitution, rest_speed, cell_size, rolling_decel, period x, period y (each
  *           a "value", below), max_events (2 bytes: 1 + v % 1000, v = 0xFFFF gives 0: invalid)
  *   then    calls: one opcode byte each (% OP_COUNT), then that call's arguments.
@@ -30,8 +31,8 @@
  * origin); kinetic energy never grows across a step (1e-9 relative) unless an immovable circle
  * moves; a world copied with memcpy mid-sequence gives the same results and hash on the next
  * call as the original. The callbacks check their events, that they fire only from the calls
- * the header lists, and try every mutator from inside: each must return CC_ERR_INVALID and
- * change nothing (the hash). */
+ * the header lists, and try every mutator from inside: each must return CC_ERR_BUSY (CC_ERR_INVALID
+ * in a world made from a 1.0 or 1.1 def: the header's Results) and change nothing (the hash). */
 #include "fuzz_world_checks.h"
 
 #include <float.h>
@@ -168,6 +169,7 @@ typedef struct model {
     double placing; /* the mass of the circle an add or set call places (0 otherwise) */
     double call_t0;
     int ncb;
+    int range_code, busy_code; /* CC_ERR_RANGE and CC_ERR_BUSY as this world's def knows them */
 } model;
 
 static model *g_cur; /* the world whose call is running (the callbacks find it here) */
@@ -249,24 +251,24 @@ static void try_mutators(model *m, int id)
     cc_segment_props q;
     if (m->ncb > 8)
         return; /* enough for one call: the first events of each call are tried */
-    REQUIRE(m, cc_world_add_circle(w, &c) == CC_ERR_INVALID, "add_circle from a callback not refused");
-    REQUIRE(m, cc_world_add_segment(w, &s) == CC_ERR_INVALID, "add_segment from a callback not refused");
-    REQUIRE(m, cc_world_step(w, 0.0) == CC_ERR_INVALID, "step(0) from a callback not refused");
-    REQUIRE(m, cc_world_step(w, 1.0) == CC_ERR_INVALID, "step(1) from a callback not refused");
+    REQUIRE(m, cc_world_add_circle(w, &c) == m->busy_code, "add_circle from a callback not refused");
+    REQUIRE(m, cc_world_add_segment(w, &s) == m->busy_code, "add_segment from a callback not refused");
+    REQUIRE(m, cc_world_step(w, 0.0) == m->busy_code, "step(0) from a callback not refused");
+    REQUIRE(m, cc_world_step(w, 1.0) == m->busy_code, "step(1) from a callback not refused");
     if (live_id(m, id)) {
         REQUIRE(m, cc_world_get_circle(w, id, &got) == CC_OK, "get_circle from a callback failed");
         got.vel.x += 1.0;
-        REQUIRE(m, cc_world_set_circle(w, id, &got) == CC_ERR_INVALID, "set_circle from a callback not refused");
-        REQUIRE(m, cc_world_remove_circle(w, id) == CC_ERR_INVALID, "remove_circle from a callback not refused");
+        REQUIRE(m, cc_world_set_circle(w, id, &got) == m->busy_code, "set_circle from a callback not refused");
+        REQUIRE(m, cc_world_remove_circle(w, id) == m->busy_code, "remove_circle from a callback not refused");
         p = m->props[id];
         p.restitution = 0.5, p.sensor = !p.sensor, p.mask = 0;
-        REQUIRE(m, cc_world_set_circle_props(w, id, &p) == CC_ERR_INVALID,
+        REQUIRE(m, cc_world_set_circle_props(w, id, &p) == m->busy_code,
                 "set_circle_props from a callback not refused");
     }
     if (m->nsegs > 0) {
         q = m->segprops[0];
         q.restitution = 0.25, q.mask = 0;
-        REQUIRE(m, cc_world_set_segment_props(w, 0, &q) == CC_ERR_INVALID,
+        REQUIRE(m, cc_world_set_segment_props(w, 0, &q) == m->busy_code,
                 "set_segment_props from a callback not refused");
     }
     REQUIRE(m, cc_world_hash(w) == h, "a refused call from a callback changed the world (hash)");
@@ -560,7 +562,7 @@ static const size_t stats_ends[] = {END(cc_world_stats, struct_size), END(cc_wor
                                     END(cc_world_stats, max_overlap), END(cc_world_stats, virial),
                                     END(cc_world_stats, wall_impulse)};
 
-static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc == CC_ERR_INVALID; }
+static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc == CC_ERR_INVALID || rc == CC_ERR_RANGE; }
 
 /* Known defects (reported to the lead), which the harness steps around unless built with
  * -DFUZZ_WORLD_STRICT (then it makes these calls and the violation shows):
@@ -745,18 +747,21 @@ static void do_step(model *m, double dt, const snap *before)
     if (getenv("FUZZ_WORLD_TRACE"))
         fprintf(stderr, "step %.17g: %d\n", dt, rc);
     fuzz_world_counted.steps++;
-    REQUIRE(m, rc_step_ok(rc), "step: a result outside OK, EVENT_LIMIT, INVALID");
+    REQUIRE(m, rc_step_ok(rc), "step: a result outside OK, EVENT_LIMIT, INVALID, RANGE");
+    REQUIRE(m, rc != CC_ERR_RANGE || m->range_code == CC_ERR_RANGE, "step: RANGE for a 1.0 or 1.1 def");
     if (!(dt >= 0.0) || isinf(dt))
         REQUIRE(m, rc == CC_ERR_INVALID, "step: an invalid dt not refused");
+    else if (!isfinite(t0 + dt))
+        REQUIRE(m, rc == m->range_code, "step: a world time that overflows not refused as a range");
     else if (m->mode == CC_MODE_SWEPT && swept_too_long(m, before, dt) > 0)
-        REQUIRE(m, rc == CC_ERR_INVALID, "step: SWEPT, periodic: a step carrying a circle half a period not refused");
+        REQUIRE(m, rc == m->range_code, "step: SWEPT, periodic: a step carrying a circle half a period not refused");
     else if (m->mode == CC_MODE_SWEPT && swept_too_long(m, before, dt) == 0)
         ; /* within rounding of half a period, or rolling: either answer */
     else if ((range = step_range(before, dt)) > 0)
-        REQUIRE(m, rc == CC_ERR_INVALID, "step: a step carrying a circle past 2^1017 not refused");
-    else if (isfinite(t0 + dt) && range < 0)
-        REQUIRE(m, rc != CC_ERR_INVALID, "step: a valid dt refused");
-    if (rc == CC_ERR_INVALID)
+        REQUIRE(m, rc == m->range_code, "step: a step carrying a circle past 2^1017 not refused");
+    else if (range < 0)
+        REQUIRE(m, rc >= 0, "step: a valid dt refused");
+    if (rc < 0)
         REQUIRE(m, cc_world_hash(m->w) == h0, "step: a refused step changed the world");
     read_stats(m, &s1);
 #ifndef FUZZ_WORLD_STRICT
@@ -796,10 +801,10 @@ static void do_step(model *m, double dt, const snap *before)
             g_vmax = fmax(g_vmax, fabs(after.c[i].vel.x) + fabs(after.c[i].vel.y));
     }
     g_loud = 1;
-    if (rc != CC_ERR_INVALID && clean && overlaps(m, &after, &what))
+    if (rc >= 0 && clean && overlaps(m, &after, &what))
         fail(m, what);
     g_loud = 0;
-    if (rc != CC_ERR_INVALID && !kin && isfinite(e0) && isfinite(e1)) {
+    if (rc >= 0 && !kin && isfinite(e0) && isfinite(e1)) {
         if (!(e1 <= e0 * (1.0 + 1e-9) + 1e-300)) {
             fprintf(stderr, "fuzz_world: kinetic energy %.17g -> %.17g\n", e0, e1);
             fail(m, "step: kinetic energy grew");
@@ -985,13 +990,33 @@ static void do_stats(model *m, reader *r)
 
 static double dist_box(double x, double lo, double hi) { return x < lo ? lo - x : x > hi ? x - hi : 0.0; }
 
+/* A cast's or query's mask (bits32's byte) and the circle its filter (1.2) leaves out, from the
+ * byte's bits 4-6 (unused by bits32): 0 is the 1.1 call (-2 here), else the filtered one with
+ * ignore = bits - 2 (-1: none; ids 0 to 5, live or not). */
+static uint32_t mask_and_ignore(reader *r, int *ignore)
+{
+    unsigned b = r->n > 0 ? r->p[0] : 0u;
+    *ignore = b & 0x80u ? -2 : (int)((b >> 4) & 7u) - 2;
+    return bits32(r);
+}
+
+static cc_query_filter filter_of(uint32_t mask, int ignore)
+{
+    cc_query_filter f = CC_QUERY_FILTER_DEFAULT;
+    f.mask = mask;
+    f.ignore = ignore;
+    return f;
+}
+
 static void do_query(model *m, reader *r, int box, const snap *s)
 {
     int ids[MAXC + 8], cap, rc, i, j;
     unsigned cb = byte(r);
     cc_vec2 c, h;
     double rad = 0.0;
-    uint32_t mask = bits32(r);
+    int ignore;
+    uint32_t mask = mask_and_ignore(r, &ignore);
+    cc_query_filter f = filter_of(mask, ignore);
     c.x = value(r, K_POS), c.y = value(r, K_POS);
     if (box) {
         h.x = c.x + value(r, K_SMALL) * (byte(r) & 1u ? 1.0 : -0.1);
@@ -1001,8 +1026,12 @@ static void do_query(model *m, reader *r, int box, const snap *s)
     cap = cb == 255 ? -1 : (int)(cb % (MAXC + 2));
     for (i = 0; i < MAXC + 8; i++)
         ids[i] = -77;
-    rc = box ? cc_world_query_box(m->w, c, h, mask, cb == 254 ? NULL : ids, cap)
-             : cc_world_query_circle(m->w, c, rad, mask, cb == 254 ? NULL : ids, cap);
+    if (ignore == -2)
+        rc = box ? cc_world_query_box(m->w, c, h, mask, cb == 254 ? NULL : ids, cap)
+                 : cc_world_query_circle(m->w, c, rad, mask, cb == 254 ? NULL : ids, cap);
+    else
+        rc = box ? cc_world_query_box_filtered(m->w, c, h, &f, cb == 254 ? NULL : ids, cap)
+                 : cc_world_query_circle_filtered(m->w, c, rad, &f, cb == 254 ? NULL : ids, cap);
     if (cap < 0 || (cb == 254 && cap > 0) || !isfinite(c.x) || !isfinite(c.y) ||
         (box ? (!isfinite(h.x) || !isfinite(h.y) || !(c.x <= h.x) || !(c.y <= h.y)) : (!isfinite(rad) || rad < 0.0))) {
         REQUIRE(m, rc == CC_ERR_INVALID, "query: invalid arguments not INVALID");
@@ -1020,7 +1049,7 @@ static void do_query(model *m, reader *r, int box, const snap *s)
         const cc_circle *k = &s->c[i];
         double dx, dy, d, lim, tol;
         int in_out, sure_in, sure_out, listed;
-        if (!(s->p[i].category & mask))
+        if (!(s->p[i].category & mask) || s->ids[i] == ignore)
             continue;
         if (box) {
             double cx = (c.x + h.x) * 0.5, cy = (c.y + h.y) * 0.5;
@@ -1071,7 +1100,7 @@ static void do_query(model *m, reader *r, int box, const snap *s)
     for (i = 1; i < (rc < cap ? rc : cap); i++)
         REQUIRE(m, ids[i] > ids[i - 1], "query: ids not increasing");
     for (i = 0; i < (rc < cap ? rc : cap); i++)
-        REQUIRE(m, live_id(m, ids[i]), "query: an id that is not live");
+        REQUIRE(m, live_id(m, ids[i]) && ids[i] != ignore, "query: an id that is not live, or the one left out");
 }
 
 static void do_cast(model *m, reader *r, const snap *s)
@@ -1079,8 +1108,9 @@ static void do_cast(model *m, reader *r, const snap *s)
     cc_cast_hit out, keep;
     cc_vec2 p, d;
     double rad;
-    uint32_t mask = bits32(r);
-    int rc, i;
+    int rc, i, ignore;
+    uint32_t mask = mask_and_ignore(r, &ignore);
+    cc_query_filter f = filter_of(mask, ignore);
     p.x = value(r, K_POS), p.y = value(r, K_POS);
     d.x = 4.0 * value(r, K_VEL), d.y = 4.0 * value(r, K_VEL);
     rad = byte(r) & 1u ? value(r, K_RAD) : 0.0;
@@ -1089,7 +1119,8 @@ static void do_cast(model *m, reader *r, const snap *s)
     if (getenv("FUZZ_WORLD_TRACE"))
         fprintf(stderr, "cast p (%.17g, %.17g) radius %.17g d (%.17g, %.17g) mask %x\n", p.x, p.y, rad, d.x, d.y,
                 (unsigned)mask);
-    rc = cc_world_cast_circle(m->w, p, rad, d, mask, &out);
+    rc = ignore == -2 ? cc_world_cast_circle(m->w, p, rad, d, mask, &out)
+                      : cc_world_cast_circle_filtered(m->w, p, rad, d, &f, &out);
     if (!isfinite(p.x) || !isfinite(p.y) || !isfinite(d.x) || !isfinite(d.y) || !isfinite(rad) || rad < 0.0) {
         REQUIRE(m, rc == CC_ERR_INVALID, "cast: invalid arguments not INVALID");
         REQUIRE(m, memcmp(&out, &keep, sizeof out) == 0, "cast: an invalid call wrote out");
@@ -1107,6 +1138,7 @@ static void do_cast(model *m, reader *r, const snap *s)
     REQUIRE(m, out.segment < m->nsegs, "cast: a wall that does not exist");
     if (out.circle >= 0) {
         REQUIRE(m, live_id(m, out.circle), "cast: hit a circle that is not live");
+        REQUIRE(m, out.circle != ignore, "cast: hit the circle its filter leaves out");
         REQUIRE(m, !m->props[out.circle].sensor, "cast: hit a sensor");
         REQUIRE(m, (m->props[out.circle].category & mask) != 0, "cast: hit a circle its mask excludes");
     } else
@@ -1212,9 +1244,9 @@ static int one_call(model *m, reader *r, int op)
         if (!circle_valid(&c))
             REQUIRE(m, rc == CC_ERR_INVALID, "add_circle: an invalid circle not INVALID");
         else if (m->count == m->maxc)
-            REQUIRE(m, rc == CC_ERR_FULL || (!fits_period(m, &c) && rc == CC_ERR_INVALID), "add_circle: not FULL");
+            REQUIRE(m, rc == CC_ERR_FULL || (!fits_period(m, &c) && rc == m->range_code), "add_circle: not FULL");
         else if (!fits_period(m, &c))
-            REQUIRE(m, rc == CC_ERR_INVALID, "add_circle: a circle too wide for the period not INVALID");
+            REQUIRE(m, rc == m->range_code, "add_circle: a circle too wide for the period not RANGE");
         else
             REQUIRE(m, rc == expect, "add_circle: not the id the header's reuse rule gives");
         if (rc >= 0) {
@@ -1259,10 +1291,13 @@ static int one_call(model *m, reader *r, int op)
         rc = cc_world_set_circle(m->w, id, &c);
         m->placing = 0.0;
         if (!live_id(m, id))
-            REQUIRE(m, rc == CC_ERR_NOT_FOUND || ((!circle_valid(&c) || !fits_period(m, &c)) && rc == CC_ERR_INVALID),
+            REQUIRE(m, rc == CC_ERR_NOT_FOUND || (!circle_valid(&c) && rc == CC_ERR_INVALID) ||
+                           (circle_valid(&c) && !fits_period(m, &c) && rc == m->range_code),
                     "set_circle: a dead id not NOT_FOUND");
-        else if (!circle_valid(&c) || !fits_period(m, &c))
+        else if (!circle_valid(&c))
             REQUIRE(m, rc == CC_ERR_INVALID, "set_circle: an invalid circle not INVALID");
+        else if (!fits_period(m, &c))
+            REQUIRE(m, rc == m->range_code, "set_circle: a circle too wide for the period not RANGE");
         else
             REQUIRE(m, rc == CC_OK, "set_circle: a valid call failed");
         if (rc == CC_OK)
@@ -1389,99 +1424,108 @@ void fuzz_world_one(const uint8_t *data, size_t size)
 {
     reader r = {data, size};
     model *m = calloc(1, sizeof *m);
-    cc_world_def def;
+    struct { /* the def, with room for a later header's fields after it */
+        cc_world_def def;
+        unsigned char later[32];
+    } xd;
     unsigned mode_b, flags, nz;
-    int valid, old_size, st = 0, ops;
+    int valid, in_range = 1, old_size, later, st = 0, ops;
     size_t bytes;
     if (m == NULL)
         return;
     fuzz_world_counted.inputs++;
     mode_b = byte(&r) % 8u;
-    cc_world_def_init(&def);
-    def.mode = mode_b == 7u ? 3 : (int)(mode_b % 3u);
-    def.max_circles = (int)(byte(&r) % (MAXC + 1));
-    def.max_segments = (int)(byte(&r) % (MAXS + 1));
+    cc_world_def_init(&xd.def);
+    xd.def.mode = mode_b == 7u ? 3 : (int)(mode_b % 3u);
+    xd.def.max_circles = (int)(byte(&r) % (MAXC + 1));
+    xd.def.max_segments = (int)(byte(&r) % (MAXS + 1));
     flags = byte(&r);
     nz = byte(&r);
-    def.restitution = value(&r, K_UNIT);
-    def.rest_speed = value(&r, K_SMALL);
-    def.cell_size = value(&r, K_SMALL);
-    def.rolling_decel = value(&r, K_SMALL) * 0.5;
-    def.period.x = value(&r, K_SMALL) * 6.0;
-    def.period.y = value(&r, K_SMALL) * 6.0;
+    xd.def.restitution = value(&r, K_UNIT);
+    xd.def.rest_speed = value(&r, K_SMALL);
+    xd.def.cell_size = value(&r, K_SMALL);
+    xd.def.rolling_decel = value(&r, K_SMALL) * 0.5;
+    xd.def.period.x = value(&r, K_SMALL) * 6.0;
+    xd.def.period.y = value(&r, K_SMALL) * 6.0;
     if (!(nz & 1u))
-        def.rest_speed = 0.0;
+        xd.def.rest_speed = 0.0;
     if (!(nz & 2u))
-        def.cell_size = 0.0;
+        xd.def.cell_size = 0.0;
     if (!(nz & 12u))
-        def.rolling_decel = 0.0;
+        xd.def.rolling_decel = 0.0;
     if (!(flags & 4u))
-        def.period.x = 0.0;
+        xd.def.period.x = 0.0;
     if (!(flags & 8u))
-        def.period.y = 0.0;
+        xd.def.period.y = 0.0;
     {
         unsigned v = byte(&r);
         v = v * 256u + byte(&r);
-        def.max_events = v == 0xFFFFu ? 0u : 1u + v % 1000u;
+        xd.def.max_events = v == 0xFFFFu ? 0u : 1u + v % 1000u;
     }
-    def.restitution_mix = nz & 0x80u ? 4 : (int)((flags >> 5) & 3u);
-    def.on_contact = flags & 1u ? on_contact : NULL;
-    def.on_sensor = flags & 2u ? on_sensor : NULL;
-    def.user = &g_user;
+    xd.def.restitution_mix = nz & 0x80u ? 4 : (int)((flags >> 5) & 3u);
+    xd.def.on_contact = flags & 1u ? on_contact : NULL;
+    xd.def.on_sensor = flags & 2u ? on_sensor : NULL;
+    xd.def.user = &g_user;
     old_size = (flags & 16u) != 0;
+    memset(xd.later, 0x77, sizeof xd.later); /* what the library must not read as this def's */
     if (old_size)
-        def.struct_size = offsetof(cc_world_def, rolling_decel);
+        xd.def.struct_size = offsetof(cc_world_def, rolling_decel);
+    else if (nz & 0x40u)
+        xd.def.struct_size = sizeof xd;
+    /* the 1.2 codes go to a def past 1.1's last field (the header's Results) */
+    later = xd.def.struct_size > offsetof(cc_world_def, period) + sizeof(cc_vec2);
+    m->range_code = later ? CC_ERR_RANGE : CC_ERR_INVALID;
+    m->busy_code = later ? CC_ERR_BUSY : CC_ERR_INVALID;
 
-    m->maxc = def.max_circles, m->maxs = def.max_segments, m->mode = def.mode;
-    m->restitution = def.restitution, m->rest_speed = def.rest_speed, m->cell_size = def.cell_size;
+    m->maxc = xd.def.max_circles, m->maxs = xd.def.max_segments, m->mode = xd.def.mode;
+    m->restitution = xd.def.restitution, m->rest_speed = xd.def.rest_speed, m->cell_size = xd.def.cell_size;
     m->rmin = INFINITY, m->fast = 0;
-    m->max_events = def.max_events;
-    m->has_contact_cb = def.on_contact != NULL;
+    m->max_events = xd.def.max_events;
+    m->has_contact_cb = xd.def.on_contact != NULL;
     if (!old_size) {
-        m->decel = def.rolling_decel, m->mix = def.restitution_mix;
-        m->period[0] = def.period.x, m->period[1] = def.period.y;
-        m->has_sensor_cb = def.on_sensor != NULL;
+        m->decel = xd.def.rolling_decel, m->mix = xd.def.restitution_mix;
+        m->period[0] = xd.def.period.x, m->period[1] = xd.def.period.y;
+        m->has_sensor_cb = xd.def.on_sensor != NULL;
     } else {
         /* garbage the library must not read */
-        def.rolling_decel = -1.0, def.restitution_mix = 99, def.on_sensor = NULL;
-        def.period.x = NAN, def.period.y = -3.0;
+        xd.def.rolling_decel = -1.0, xd.def.restitution_mix = 99, xd.def.on_sensor = NULL;
+        xd.def.period.x = NAN, xd.def.period.y = -3.0;
     }
     m->op = -1;
-    valid = def.mode >= 0 && def.mode <= 2 && m->restitution >= 0.0 && m->restitution <= 1.0 &&
+    valid = xd.def.mode >= 0 && xd.def.mode <= 2 && m->restitution >= 0.0 && m->restitution <= 1.0 &&
             m->rest_speed >= 0.0 && isfinite(m->rest_speed) && m->cell_size >= 0.0 && isfinite(m->cell_size) &&
             m->max_events >= 1 && m->decel >= 0.0 && isfinite(m->decel) && m->mix >= 0 && m->mix <= 3;
     {
-        int k, edge = 0;
+        int k;
         for (k = 0; k < 2; k++) {
             double p = m->period[k];
-            if (!(p == 0.0 || (p > 0.0 && isfinite(p) && p >= m->cell_size)))
+            if (!(p == 0.0 || (p > 0.0 && isfinite(p))))
                 valid = 0;
-            if (p > 0.0 && p == m->cell_size)
-                edge = 1; /* "at least ... a cell": the header allows it, the library may not */
+            else if (p > 0.0 && !(p > m->cell_size))
+                in_range = 0; /* a period must hold a cell: beyond that limit */
         }
-        bytes = cc_world_size(&def);
-        if (edge && valid && bytes == 0)
-            valid = 0;
+        bytes = cc_world_size(&xd.def);
     }
     /* a def too short to be one */
     {
-        cc_world_def shortdef = def;
+        cc_world_def shortdef = xd.def;
         shortdef.struct_size = 8;
         REQUIRE(NULL, cc_world_size(&shortdef) == 0, "cc_world_size of a too short def not 0");
         check_init_fails(&shortdef, 4096, 0, CC_ERR_VERSION, "init with a too short def not VERSION");
     }
-    if (!valid) {
+    if (!valid || !in_range) {
         REQUIRE(NULL, bytes == 0, "cc_world_size of an invalid def not 0");
-        check_init_fails(&def, 4096, 0, CC_ERR_INVALID, "init with an invalid def not INVALID");
+        check_init_fails(&xd.def, 4096, 0, valid ? m->range_code : CC_ERR_INVALID,
+                         valid ? "init with a period not wider than its cell not RANGE" : "init with an invalid def not INVALID");
         free(m);
         return;
     }
     REQUIRE(NULL, bytes > 0, "cc_world_size of a valid def is 0");
-    check_init_fails(&def, bytes - 1, 0, CC_ERR_MEMORY, "init with one byte too few not MEMORY");
-    check_init_fails(&def, bytes, 4, CC_ERR_MEMORY, "init with misaligned memory not MEMORY");
+    check_init_fails(&xd.def, bytes - 1, 0, CC_ERR_MEMORY, "init with one byte too few not MEMORY");
+    check_init_fails(&xd.def, bytes, 4, CC_ERR_MEMORY, "init with misaligned memory not MEMORY");
     {
         int s2 = 0;
-        REQUIRE(NULL, cc_world_init(NULL, bytes, &def, &s2) == NULL && s2 == CC_ERR_MEMORY, "init of NULL memory");
+        REQUIRE(NULL, cc_world_init(NULL, bytes, &xd.def, &s2) == NULL && s2 == CC_ERR_MEMORY, "init of NULL memory");
     }
     m->bytes = bytes;
     m->block = malloc(bytes + 2 * GUARD);
@@ -1491,7 +1535,7 @@ void fuzz_world_one(const uint8_t *data, size_t size)
     }
     fill_guards(m->block, bytes);
     memset(m->block + GUARD, 0x3C, bytes);
-    m->w = cc_world_init(m->block + GUARD, bytes, &def, &st);
+    m->w = cc_world_init(m->block + GUARD, bytes, &xd.def, &st);
     REQUIRE(m, m->w == (cc_world *)(void *)(m->block + GUARD) && st == CC_OK, "init of a valid def failed");
     REQUIRE(m, cc_world_time(m->w) == 0.0, "a new world's time is not 0");
     check_guards(m);
@@ -1499,10 +1543,11 @@ void fuzz_world_one(const uint8_t *data, size_t size)
     fuzz_world_counted.worlds++;
     if (getenv("FUZZ_WORLD_TRACE"))
         fprintf(stderr, "def: mode %d, %d circles, %d walls, restitution %.17g, rest_speed %.17g, cell_size %.17g, "
-                        "max_events %llu, rolling %.17g, mix %d, period (%.17g, %.17g), callbacks %d %d, 1.0 size %d\n",
+                        "max_events %llu, rolling %.17g, mix %d, period (%.17g, %.17g), callbacks %d %d, 1.0 size %d, "
+                        "1.2 codes %d\n",
                 m->mode, m->maxc, m->maxs, m->restitution, m->rest_speed, m->cell_size,
                 (unsigned long long)m->max_events, m->decel, m->mix, m->period[0], m->period[1], m->has_contact_cb,
-                m->has_sensor_cb, old_size);
+                m->has_sensor_cb, old_size, later);
     for (ops = 0; ops < MAX_OPS && r.n > 0 && !m->dead; ops++)
         one_call(m, &r, (int)(byte(&r) % OP_COUNT));
     g_cur = NULL;

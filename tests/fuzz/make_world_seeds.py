@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the hand-made seed inputs of the world fuzzer's corpus (tests/fuzz/corpus_world/seed-*):
 a def (every mode, small and grid-sized capacities, walls, periods, rolling, callbacks, a def of
-1.0's size, invalid defs) then a sequence of calls (fuzz_world_checks.c gives the byte layout).
+1.0's size, a later header's def, invalid defs) then a sequence of calls (fuzz_world_checks.c gives the byte layout).
 The fuzzer's own finds are merged in beside them (scripts/test.d/30-fuzz.sh explains how).
 
     python3 tests/fuzz/make_world_seeds.py tests/fuzz/corpus_world
@@ -96,6 +96,16 @@ def main():
     seeds["invalid-period"] = defbytes(0, 10, 0, 4, 2, cell=3.0, px=2.0) + calls(rng, 5, 10)
     seeds["invalid-events"] = defbytes(0, 10, 0, 0, 0)[:-2] + [255, 255]
     seeds["empty"] = []
+    # defs of a later header (byte 4 bit 6: struct_size past this header's def), which get the 1.2
+    # codes: CC_ERR_BUSY from the callbacks, CC_ERR_RANGE for circles too wide for the period and
+    # steps too long (drawn after the seeds above, which the rng leaves as they were)
+    for mode in range(3):
+        for name, maxc, maxs, flags, nz, kw in [
+            ("later-walls", 20, 8, 3, 0x40, {}),
+            ("later-periodic", 36, 0, 3 | 4 | 8, 2 | 0x40, {"cell": 1.0, "px": 8.0, "py": 8.0}),
+        ]:
+            seeds["%s-%d" % (name, mode)] = defbytes(mode, maxc, maxs, flags, nz, **kw) + calls(rng, 60, maxc, 0.05, 0.6)
+    seeds["later-invalid-period"] = defbytes(0, 10, 0, 4, 2 | 0x40, cell=3.0, px=2.0) + calls(rng, 5, 10)
     for name, b in sorted(seeds.items()):
         with open(os.path.join(d, "seed-" + name), "wb") as f:
             f.write(bytes(b))

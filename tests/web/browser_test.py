@@ -3,8 +3,13 @@
 
 Serves demo/web/ on 127.0.0.1 (a free port), loads the page and checks:
   - the WebAssembly module loaded and the version string shown is the header's;
+  - the pull (before the break): pressed on the aim point and pulled 60 degrees off the cue, the
+    page shows the power its component along the cue gives (ccPage.pull(), #power); pulled
+    forward it shows that there is no power and why, and released there it shoots nothing;
   - two shots fired through the page's own mouse handlers (press on the aim point, pull back,
-    release): the break sets balls moving, and after each shot they all come to rest;
+    release): the break sets balls moving, and after each shot they all come to rest; the second
+    is pulled 45 degrees off the cue and shoots along the aim at the speed of the pull's
+    component along it;
   - no console message of level SEVERE (console.error, an uncaught exception, a failed load);
   - the reset button brings a new rack (after the state below is taken);
   - every resource the page loaded came from the local server;
@@ -12,9 +17,11 @@ Serves demo/web/ on 127.0.0.1 (a free port), loads the page and checks:
     by the native library (web_replay, tests/web/replay.c) gives the same world time, the same
     cc_world_hash and the same position and velocity of every circle, bit for bit.
 Writes build/web/ (or --out): pool.png (screenshot), journal.txt, page_state.txt,
-native_state.txt. usage: browser_test.py --replay PATH --version X.Y.Z [--out DIR]"""
+native_state.txt, figures.txt (what docs/WEB.md states of the run: scripts/doc_figures.py). usage: browser_test.py --replay PATH --version X.Y.Z [--out DIR]"""
 import argparse
 import functools
+import math
+import re
 import http.server
 import os
 import subprocess
@@ -96,23 +103,88 @@ def main():
                 others.sort((a, b) => Math.hypot(a.x - cue.x, a.y - cue.y) - Math.hypot(b.x - cue.x, b.y - cue.y));
                 return [others[0].x, others[0].y];""")
 
-        def shoot(aim, pull, number):
-            """the page's own mouse handlers: press on the aim point, pull back `pull` metres
-            along the aim in five moves, release; then wait until every ball rests"""
+        def aim_axis(aim):
+            """the unit vector from the cue ball to the aim point, and its left normal"""
             cue = driver.execute_script("return ccPage.balls().find(b => b.id === ccPage.cueId())")
-            d = ((aim[0] - cue["x"]) ** 2 + (aim[1] - cue["y"]) ** 2) ** 0.5
+            d = math.hypot(aim[0] - cue["x"], aim[1] - cue["y"])
             u = ((aim[0] - cue["x"]) / d, (aim[1] - cue["y"]) / d)
-            p0, p1 = client(*aim), client(aim[0] - pull * u[0], aim[1] - pull * u[1])
+            return u, (-u[1], u[0])
+
+        def press_and_pull(aim, back, side):
+            """press on the aim point, then move `back` metres against the aim and `side` across
+            it in five moves, the button held (the pull is read before it is released)"""
+            u, n = aim_axis(aim)
+            p0 = client(*aim)
+            p1 = client(aim[0] - back * u[0] + side * n[0], aim[1] - back * u[1] + side * n[1])
             actions = ActionBuilder(driver)
             actions.pointer_action.move_to_location(round(p0["x"]), round(p0["y"]))
             actions.pointer_action.pointer_down()
             for k in range(1, 6):
                 actions.pointer_action.move_to_location(round(p0["x"] + (p1["x"] - p0["x"]) * k / 5),
                                                         round(p0["y"] + (p1["y"] - p0["y"]) * k / 5))
+            actions.perform()
+            time.sleep(0.1)  # a frame, so that #power shows this pull
+            return u
+
+        def release():
+            actions = ActionBuilder(driver)
             actions.pointer_action.pointer_up()
             actions.perform()
+
+        def check_pull_shown(what, q, want_back, text):
+            """the pull's component against the aim is what the mouse did (to a pixel, 3 mm), its
+            speed MAX_SPEED * component / MAX_PULL (9 m/s for 0.45 m), and #power says it"""
+            speed = 9.0 * min(max(q["back"], 0.0), 0.45) / 0.45
+            if abs(q["back"] - want_back) > 0.006 or abs(q["speed"] - speed) > 1e-9:
+                failures.append("%s: pull %r, want a component of %.3f m and %.3f m/s" % (what, q, want_back, speed))
+            shown = re.search(r"power ([0-9.]+) m/s", text)
+            if not shown or abs(float(shown.group(1)) - q["speed"]) > 0.051:
+                failures.append("%s: #power says %r while the pull gives %.2f m/s" % (what, text, q["speed"]))
+            print("%s: component %.3f m against the aim, %.2f m/s; #power: %s" % (what, q["back"], q["speed"], text))
+
+        def check_pull():
+            """pulled 60 degrees off the cue (0.2 m back, 0.3464 m across: 0.4 m in all), the
+            page shows the power of the 0.2 m along the cue, 9 * 0.2 / 0.45 = 4.0 m/s, and says
+            the pull is off the cue; pushed forward (0.1 m toward the aim) it shows no power and
+            why; released there, no shot, and the page says why"""
+            aim = (0.75 * 2.54, 0.5 * 1.27)
+            press_and_pull(aim, 0.2, 0.2 * math.tan(math.radians(60)))
+            q, text = driver.execute_script("return [ccPage.pull(), ccPage.powerText()]")
+            check_pull_shown("pull 60 degrees off the cue", q, 0.2, text)
+            if "off the cue" not in text:
+                failures.append("a pull 60 degrees off the cue: #power does not say so: %r" % text)
+            p = client(aim[0] + 0.1 * aim_axis(aim)[0][0], aim[1] + 0.1 * aim_axis(aim)[0][1])
+            actions = ActionBuilder(driver)
+            actions.pointer_action.move_to_location(round(p["x"]), round(p["y"]))
+            actions.perform()
+            time.sleep(0.1)
+            q, text = driver.execute_script("return [ccPage.pull(), ccPage.powerText()]")
+            print("pull forward: component %.3f m; #power: %s" % (q["back"], text))
+            if not (q["back"] < 0 and q["speed"] == 0 and "power 0 m/s: pull back along the cue" in text):
+                failures.append("a pull toward the aim: %r, #power %r" % (q, text))
+            release()
+            time.sleep(0.1)
+            state, shots, text = driver.execute_script("return [ccPage.state(), ccPage.shots(), ccPage.powerText()]")
+            print("released there: state %s, shots %d; #power: %s" % (state, shots, text))
+            if state != "aim" or shots != 0 or "no shot: pull back along the cue" not in text:
+                failures.append("a release without power: state %s, %d shots, #power %r" % (state, shots, text))
+
+        def shoot(aim, pull, number, side=0.0):
+            """the page's own mouse handlers: press on the aim point, pull back `pull` metres
+            along the aim (and `side` across it) in five moves, release; then wait until every
+            ball rests. The shot goes along the aim at the speed the pull showed before release."""
+            press_and_pull(aim, pull, side)
+            q = driver.execute_script("return ccPage.pull()")
+            if side:
+                check_pull_shown("shot %d, pulled %.0f degrees off the cue" % (number, math.degrees(math.atan2(side, pull))),
+                                 q, pull, driver.execute_script("return ccPage.powerText()"))
+            release()
             wait_for("shot %d (ccPage.shots() == %d)" % (number, number),
                      lambda: driver.execute_script("return ccPage.shots()") == number, 5)
+            shot = driver.execute_script("return ccPage.lastShot()")
+            if abs(shot["speed"] - q["speed"]) > 1e-12 or abs(shot["x"] - q["aim"]["x"]) > 1e-12 or \
+                    abs(shot["y"] - q["aim"]["y"]) > 1e-12:
+                failures.append("shot %d: %r, the pull before release %r" % (number, shot, q))
             t_shot = time.monotonic()
             wait_for("every ball at rest after shot %d" % number, lambda: driver.execute_script(
                 "return ccPage.state() === 'aim' && ccPage.shots() === arguments[0]", number), 40)
@@ -126,6 +198,7 @@ def main():
             if rolling:
                 failures.append("%s: balls still moving: %s" % (what, rolling))
 
+        check_pull()
         before = {b["id"]: b for b in driver.execute_script("return ccPage.balls()")}
         # the break: aimed at the apex ball, pulled back 0.4 m (0.4 / 0.45 of full power: 8 m/s,
         # the demo's break)
@@ -137,8 +210,9 @@ def main():
         if moved < 8:
             failures.append("only %d balls moved" % moved)
         check_rest("after the break")
-        # a second shot, at the ball nearest the cue ball (5 m/s)
-        shoot(nearest_ball(), 0.25, 2)
+        # a second shot, at the ball nearest the cue ball, pulled 45 degrees off the cue: 0.25 m
+        # along it, 9 * 0.25 / 0.45 = 5 m/s
+        shoot(nearest_ball(), 0.25, 2, side=0.25)
         check_rest("after the second shot")
         # the mouse on the nearest ball again, so that the screenshot shows the next aim: the
         # aiming line, the ghost ball and the object ball's path
@@ -151,6 +225,10 @@ def main():
         driver.save_screenshot(os.path.join(args.out, "pool.png"))
         journal = driver.execute_script("return ccPage.journal()")
         page_state = driver.execute_script("return ccPage.worldState()")
+        run_figures = driver.execute_script(
+            "return {steps: ccPage.steps(), time: ccPage.time(), potted: ccPage.potted().length, fouls: ccPage.fouls(), "
+            "bytes: ccPage.worldBytes()}")
+        chromium = driver.capabilities.get("browserVersion", "0").split(".")[0]
         # the reset button: a new rack in the same memory, nothing potted, the cue ball back
         driver.find_element("id", "reset").click()
         wait_for("the reset", lambda: driver.execute_script(
@@ -191,6 +269,13 @@ def main():
         print("determinism: the native replay of the %d journal lines matches the page bit for bit "
               "(world time, hash, position and velocity of %d circles): %s"
               % (len(journal.splitlines()), len(page_lines) - 2, page_lines[1]))
+    # what docs/WEB.md states of this run (scripts/doc_figures.py checks it against the text)
+    with open(os.path.join(args.out, "figures.txt"), "w") as f:
+        f.write("web.steps %d\nweb.world_time %.1f\nweb.potted %d\nweb.cue_potted %d\nweb.journal_lines %d\n"
+                "web.hash %s\nweb.circles %d\nweb.chromium %s\nweb.world_bytes %d\n"
+                % (run_figures["steps"], run_figures["time"], run_figures["potted"], run_figures["fouls"],
+                   len(journal.splitlines()), page_lines[1].split()[-1] if len(page_lines) > 1 else "?",
+                   len(page_lines) - 2, chromium, run_figures["bytes"]))
     print("browser test: %.1f s; screenshot %s" % (time.monotonic() - t_start, os.path.join(args.out, "pool.png")))
     for f in failures:
         print("FAILED: " + f)

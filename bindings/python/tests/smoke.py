@@ -20,6 +20,6 @@ w.add_circle(a)
 w.add_circle(b)
 w.step(10.0)
 assert w.stats.collisions == 1 and w.velocities.tolist() == [[-1.0, 0.0], [1.0, 0.0]]
-assert pickle.loads(pickle.dumps(w)).hash() == w.hash()
+assert pickle.loads(pickle.dumps(w)).hash == w.hash
 print(f"smoke ok: circlecollide {cc.__version__}, C library {cc.library_version()} at {cc.library_path()}")
 sys.exit(0)

@@ -38,7 +38,7 @@ def trace(w, steps=30):
     out = []
     for _ in range(steps):
         w.step(0.13)
-        out.append((w.positions.tobytes(), w.velocities.tobytes(), w.hash(), w.time, w.stats))
+        out.append((w.positions.tobytes(), w.velocities.tobytes(), w.hash, w.time, w.stats))
     return out
 
 
@@ -52,7 +52,7 @@ def test_a_copy_steps_bit_for_bit_like_the_original(mode, how):
         "method": lambda w: w.copy(),
         "pickle": lambda w: pickle.loads(pickle.dumps(w)),
     }[how](w)
-    assert c is not w and c.hash() == w.hash() and c.time == w.time
+    assert c is not w and c.hash == w.hash and c.time == w.time
     assert c.stats == w.stats and c.ids == w.ids and c.circle_props(40) == w.circle_props(40)
     assert trace(c) == trace(w)
     assert w.stats.collisions > 0  # the comparison covered impacts
@@ -80,10 +80,10 @@ def test_a_pickle_carries_the_state_to_another_process():
         "import pickle, sys\n"
         "w = pickle.loads(sys.stdin.buffer.read())\n"
         "for _ in range(10): w.step(0.13)\n"
-        "print(w.hash())\n"
+        "print(w.hash)\n"
     )
     out = subprocess.run([sys.executable, "-c", code], input=data, capture_output=True, check=True).stdout
-    assert int(out) == w.hash()
+    assert int(out) == w.hash
 
 
 def test_copies_of_a_world_with_callbacks_call_their_own():
@@ -175,8 +175,8 @@ def test_unpickling_refuses_another_library():
     wrong = World(max_circles=2)
     wrong.add_circle(Circle(pos=(0, 0), vel=(1, 0), radius=2))
     with pytest.raises(ValueError, match="hash"):
-        fn(dict(state, hash=wrong.hash()))
-    assert fn(dict(state, memory=bytes(m))).hash() == w.hash()
+        fn(dict(state, hash=wrong.hash))
+    assert fn(dict(state, memory=bytes(m))).hash == w.hash
 
 
 def test_deepcopy_of_a_callback_that_refers_to_its_world_refers_to_the_copy():

@@ -26,6 +26,8 @@ from circlecollide import (
 )
 
 INVALID = -1
+RANGE = -6  # CC_ERR_RANGE (1.2): a value beyond a documented limit
+BUSY = -7  # CC_ERR_BUSY (1.2): a change of the world from inside its own callback
 
 
 def head_on():
@@ -109,7 +111,7 @@ def test_changing_the_world_from_on_contact_says_called_from_a_callback(call):
     holder["w"] = w
     with refused(rf"{call} called from a callback") as info:
         w.step(10.0)
-    assert info.value.code == INVALID
+    assert info.value.code == BUSY and "(CC_ERR_BUSY)" in str(info.value)
     assert w.time == pytest.approx(10.0) and len(w) == 1  # the step completed, nothing changed
     assert w.circle(0).vel == pytest.approx((-1.0, 0.0))
 
@@ -158,7 +160,7 @@ def test_circle_refuses_invalid_assignments_and_keeps_its_value():
         c.radius = "x"
     with pytest.raises(TypeError, match="mass"):
         c.mass = None
-    with pytest.raises(ValueError, match="vel must be a pair"):
+    with pytest.raises(TypeError, match="vel must be a pair"):
         c.vel = "ab"
     assert c == Circle(pos=(1, 2), vel=(3, 4), radius=1, mass=2)
     c.mass = math.inf  # immovable is valid
@@ -176,7 +178,7 @@ def is_vec2(v, x=None, y=None):
     return ok and (x is None or v == (x, y))
 
 
-def test_vec2_is_a_named_tuple_that_unpacks_and_compares():
+def test_vec2_is_a_tuple_that_unpacks_and_compares():
     v = Vec2(1.0, 2.0)
     x, y = v
     assert (x, y) == (1.0, 2.0) and v == (1.0, 2.0) and v.x == 1.0 and v.y == 2.0
@@ -202,7 +204,7 @@ def test_every_vector_that_comes_back_is_a_vec2():
     assert is_vec2(e.point, 5.0, 0.0) and is_vec2(e.normal, 1.0, 0.0)
     assert all(is_vec2(p) for p in w.segment(sid))
     assert is_vec2(w.circle(cid).pos) and is_vec2(w.circle(cid).vel)
-    assert is_vec2(w.unwrapped(cid)) and is_vec2(w.momentum()) and is_vec2(w.period, 0.0, 0.0)
+    assert is_vec2(w.unwrapped(cid)) and isinstance(w.momentum, Vec2) and is_vec2(w.period, 0.0, 0.0)
     hit = w.cast_circle((0, 0), (10, 0), 0.5)
     assert hit is not None and is_vec2(hit.point) and is_vec2(hit.normal)
 

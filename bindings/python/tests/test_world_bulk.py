@@ -37,10 +37,10 @@ def test_add_circles_is_add_circle_row_by_row():
     single = [b.add_circle(Circle(tuple(pos[i]), tuple(vel[i]), r[i], m[i])) for i in range(40)]
     assert ids.tolist() == single
     assert ids[:3].tolist() == [3, 1, 5]
-    assert a.hash() == b.hash()
+    assert a.hash == b.hash
     a.step(2.0)
     b.step(2.0)
-    assert a.hash() == b.hash()
+    assert a.hash == b.hash
 
 
 def test_chunks_are_one_call_each_and_the_same_world():
@@ -50,7 +50,7 @@ def test_chunks_are_one_call_each_and_the_same_world():
     chunked.ADD_CHUNK = 3
     one.add_circles(pos, vel, r, m)
     assert chunked.add_circles(pos, vel, r, m).tolist() == list(range(10))
-    assert one.hash() == chunked.hash()
+    assert one.hash == chunked.hash
 
 
 def test_scalars_broadcast_and_the_defaults():
@@ -82,22 +82,22 @@ def test_a_bad_row_is_named_and_nothing_is_added(column, value, message):
     arrays[column][4] = value  # the first bad row is named
     w = World(max_circles=16)
     w.add_circle(Circle((50, 50), (0, 0), 1))
-    before = w.hash()
+    before = w.hash
     with pytest.raises(CircleCollideError, match=message) as e:
         w.add_circles(**arrays)
     assert e.value.code == -1
-    assert len(w) == 1 and w.hash() == before
+    assert len(w) == 1 and w.hash == before
 
 
 def test_full_and_too_wide_are_named_and_nothing_is_added():
     pos, vel, r, m = rows(6)
     w = World(max_circles=5)
     w.add_circle(Circle((50, 50), (0, 0), 1))
-    before = w.hash()
+    before = w.hash
     # 4 places left: rows 0-3 fit, row 4 finds the world full
     with pytest.raises(CircleCollideError, match="row 4 does not fit: the world holds 5 circles") as e:
         w.add_circles(pos, vel, r, m)
-    assert e.value.code == -3 and len(w) == 1 and w.hash() == before
+    assert e.value.code == -3 and len(w) == 1 and w.hash == before
     # a bad row before the first that does not fit is named instead (as row-by-row adds meet it)
     m[1] = 0.0
     with pytest.raises(CircleCollideError, match="row 1: mass"):

@@ -157,7 +157,7 @@ def test_world_arguments_are_checked():
         World(max_circles=1, restitution_mix="median")
     with pytest.raises(CircleCollideError, match="CC_ERR_INVALID"):
         World(max_circles=1, rolling_decel=-1.0)
-    with pytest.raises(ValueError, match="period"):
+    with pytest.raises(TypeError, match="period"):
         World(max_circles=1, period=5.0)
 
 

@@ -9,12 +9,9 @@ use std::process::Command;
 fn main() {
     let manifest = PathBuf::from(env::var("CARGO_MANIFEST_DIR").unwrap());
     // The C sources: the repository this crate lives in, unless told otherwise.
-    let root = env::var_os("CIRCLECOLLIDE_SOURCE_DIR")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| manifest.join("../../.."));
-    let root = root
-        .canonicalize()
-        .unwrap_or_else(|e| panic!("circlecollide sources not found at {}: {e}", root.display()));
+    let root = env::var_os("CIRCLECOLLIDE_SOURCE_DIR").map(PathBuf::from).unwrap_or_else(|| manifest.join("../../.."));
+    let root =
+        root.canonicalize().unwrap_or_else(|e| panic!("circlecollide sources not found at {}: {e}", root.display()));
     for p in ["include", "src", "CMakeLists.txt"] {
         println!("cargo:rerun-if-changed={}", root.join(p).display());
     }

@@ -11,7 +11,7 @@ import numpy.typing as npt
 
 from . import _lib
 from . import _errors
-from ._errors import check
+from ._errors import CircleCollideError
 
 ArrayLike = npt.ArrayLike
 
@@ -48,7 +48,9 @@ def sweep_many(
     Returns t, an array of n float64: the time of first contact for a hit, 0 for an overlap at
     t = 0, +inf for a miss. With ``return_codes=True`` returns ``(t, codes)`` where codes (int32)
     holds 0 (miss), 1 (hit) or 2 (overlap) per pair. Bit-identical to ``sweep`` pair by pair.
-    Any invalid value (NaN, radius <= 0, ...) raises ValueError and nothing is computed.
+    Any invalid value (NaN, radius <= 0, ...) raises ``CircleCollideError`` (a ValueError) naming
+    the first row that holds one (``sweep_many: row 3: a_radius[3] must be finite and > 0, got
+    nan``), and nothing is returned.
     """
     ap, av, bp, bv = (
         _points(a_pos, "a_pos"),
@@ -70,11 +72,30 @@ def sweep_many(
     t = np.empty(n, dtype=np.float64)
     codes = np.empty(n, dtype=np.intc) if return_codes else None
     codes_ptr = codes.ctypes.data_as(ctypes.POINTER(ctypes.c_int)) if codes is not None else None
+    tm = _errors.t_max(t_max, context="sweep_many")
     # also for n == 0, so that t_max is validated the same way
-    check(
-        _lib.lib.cc_sweep_many(
-            n, ctypes.byref(soa_a), ctypes.byref(soa_b), _errors.t_max(t_max, context="sweep_many"), _ptr(t), codes_ptr
-        ),
-        "sweep_many",
-    )
+    r = _lib.lib.cc_sweep_many(n, ctypes.byref(soa_a), ctypes.byref(soa_b), tm, _ptr(t), codes_ptr)
+    if r < 0:
+        raise _first_bad_row(r, (("a_pos", ap), ("a_vel", av), ("b_pos", bp), ("b_vel", bv)), (("a_radius", ar), ("b_radius", br)))
     return (t, codes) if codes is not None else t
+
+
+def _first_bad_row(code: int, points: Any, radii: Any) -> CircleCollideError:
+    """The library refused the batch (it says CC_ERR_INVALID, not where): the first row whose
+    position or velocity is not finite, or whose radius is not finite and > 0, named with its
+    value. Only on that error path: the valid call pays nothing for it."""
+    bad = []
+    for name, a in points:
+        rows = np.flatnonzero(~np.isfinite(a).all(axis=1))
+        if rows.size:
+            i = int(rows[0])
+            bad.append((i, f"{name}[{i}] must be finite, got ({_errors.show(a[i, 0])}, {_errors.show(a[i, 1])})"))
+    for name, r in radii:
+        rows = np.flatnonzero(~(np.isfinite(r) & (r > 0)))
+        if rows.size:
+            i = int(rows[0])
+            bad.append((i, f"{name}[{i}] must be finite and > 0, got {_errors.show(r[i])}"))
+    if not bad:
+        return CircleCollideError(code, "sweep_many")
+    i, detail = min(bad)
+    return CircleCollideError(code, "sweep_many", f"row {i}: {detail}")

@@ -6,6 +6,8 @@ from __future__ import annotations
 import math
 from typing import Any, Optional
 
+import numpy as np
+
 from . import _lib
 
 #: the C names of the error codes, for messages the binding writes itself
@@ -15,6 +17,8 @@ CODE_NAMES = {
     _lib.ERR_FULL: "CC_ERR_FULL",
     _lib.ERR_MEMORY: "CC_ERR_MEMORY",
     _lib.ERR_VERSION: "CC_ERR_VERSION",
+    _lib.ERR_RANGE: "CC_ERR_RANGE",
+    _lib.ERR_BUSY: "CC_ERR_BUSY",
 }
 
 
@@ -49,6 +53,18 @@ def invalid(context: str, detail: str) -> CircleCollideError:
     return CircleCollideError(_lib.ERR_INVALID, context, detail)
 
 
+def out_of_range(context: str, detail: str) -> CircleCollideError:
+    """A CircleCollideError with code CC_ERR_RANGE (a value beyond a documented limit) and the
+    binding's own explanation."""
+    return CircleCollideError(_lib.ERR_RANGE, context, detail)
+
+
+def busy(context: str, detail: str) -> CircleCollideError:
+    """A CircleCollideError with code CC_ERR_BUSY (a change of the world from inside its own
+    callback) and the binding's own explanation."""
+    return CircleCollideError(_lib.ERR_BUSY, context, detail)
+
+
 def show(v: Any) -> str:
     """A value as a message shows it: ints as ints, other numbers as Python floats
     (``nan``, ``-1.0``; numpy scalars lose their type name), anything else as its repr."""
@@ -65,15 +81,44 @@ def show(v: Any) -> str:
 
 
 def number(v: Any, name: str, context: str = "") -> float:
-    """v as a float; a value that is not a real number is a TypeError naming the argument."""
+    """v as a float; a value that is not a real number (a string, even of digits, a bool, None,
+    a complex) is a TypeError naming the argument."""
     if type(v) is float:  # the common case, first
         return v
-    if isinstance(v, (str, bytes, complex)):
+    if isinstance(v, (str, bytes, complex, bool, np.bool_)):
         raise TypeError(f"{context + ': ' if context else ''}{name} must be a real number, got {v!r}")
     try:
         return float(v)
     except (TypeError, ValueError):
         raise TypeError(f"{context + ': ' if context else ''}{name} must be a real number, got {v!r}") from None
+
+
+def integer(v: Any, name: str, context: str = "") -> int:
+    """v as an int; anything but an integer (a float, even 5.0, a string, a bool) is a TypeError
+    naming the argument."""
+    if type(v) is int:
+        return v
+    if isinstance(v, bool) or not hasattr(v, "__index__"):
+        raise TypeError(f"{context + ': ' if context else ''}{name} must be an int, got {v!r}")
+    return int(v.__index__())
+
+
+def boolean(v: Any, name: str, context: str = "") -> bool:
+    """v as a bool: True, False (or numpy's); anything else is a TypeError naming the argument
+    ('yes' and 1 are not a bool)."""
+    if v is True or v is False:
+        return v
+    if isinstance(v, np.bool_):
+        return bool(v)
+    raise TypeError(f"{context + ': ' if context else ''}{name} must be True or False, got {v!r}")
+
+
+def callback(v: Any, name: str, context: str = "") -> Any:
+    """v when it is callable or None; anything else is a TypeError naming the argument (at once,
+    not at the first event)."""
+    if v is not None and not callable(v):
+        raise TypeError(f"{context + ': ' if context else ''}{name} must be callable or None, got {v!r}")
+    return v
 
 
 def finite(v: Any, name: str, context: str = "") -> float:

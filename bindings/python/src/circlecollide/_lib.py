@@ -27,6 +27,9 @@ ERR_NOT_FOUND = -2
 ERR_FULL = -3
 ERR_MEMORY = -4
 ERR_VERSION = -5
+# 1.2: a world made from a def past 1.1's gives these where 1.0 and 1.1 said ERR_INVALID
+ERR_RANGE = -6
+ERR_BUSY = -7
 
 # ---- value types -----------------------------------------------------------------------------
 
@@ -170,6 +173,14 @@ class cc_cast_hit(ctypes.Structure):
     ]
 
 
+class cc_query_filter(ctypes.Structure):  # 1.2
+    _fields_ = [
+        ("struct_size", ctypes.c_size_t),
+        ("mask", ctypes.c_uint32),
+        ("ignore", c_int),
+    ]
+
+
 P = ctypes.POINTER
 _vp = ctypes.c_void_p
 
@@ -229,6 +240,9 @@ PROTOTYPES: dict[str, tuple[Any, list[Any]]] = {
     # 1.2
     "cc_world_add_circles": (c_int, [_vp, P(cc_circle), c_int, P(c_int), P(c_int)]),
     "cc_world_get_unwrapped_all": (c_int, [_vp, P(c_int), P(cc_vec2), c_int]),
+    "cc_world_cast_circle_filtered": (c_int, [_vp, cc_vec2, c_double, cc_vec2, P(cc_query_filter), P(cc_cast_hit)]),
+    "cc_world_query_circle_filtered": (c_int, [_vp, cc_vec2, c_double, P(cc_query_filter), P(c_int), c_int]),
+    "cc_world_query_box_filtered": (c_int, [_vp, cc_vec2, cc_vec2, P(cc_query_filter), P(c_int), c_int]),
 }
 
 #: Functions a library of our major version may lack while the world is being built; calling a

@@ -46,6 +46,28 @@ def _contact_struct(precision: Precision) -> Any:
     return _lib.cc_contact() if precision == "double" else _lib.cc_contactf()
 
 
+# What the library refuses that a Circle's own checks cannot see, named by the binding (the pair
+# functions take no def, so the library says CC_ERR_INVALID for all of it).
+def _not_both_immovable(a: Circle, b: Circle, context: str) -> None:
+    if isinstance(a, Circle) and isinstance(b, Circle) and a.immovable and b.immovable:
+        raise _errors.invalid(
+            context, "a and b are both immovable (mass inf): two immovable circles cannot respond to each other"
+        )
+
+
+def _unit_normal(contact: Contact, precision: Precision, context: str) -> None:
+    """The library's check of contact.normal (|n| within 1e-6 of 1; 1e-4 in float), named."""
+    if not isinstance(contact, Contact):
+        raise TypeError(f"{context}: contact must be a Contact, got {type(contact).__name__}")
+    n = vec2(contact.normal, "contact.normal", context)
+    tol = 1e-6 if precision == "double" else 1e-4
+    length = math.hypot(n[0], n[1])
+    if not abs(length - 1.0) <= tol:
+        raise _errors.invalid(
+            context, f"contact.normal must be a unit vector (length within {tol:g} of 1), got length {_errors.show(length)}"
+        )
+
+
 # ---- the per-call fast path ---------------------------------------------------------------------
 # A Circle is valid by construction (checked when made and when set), so the double functions
 # of two Circles need no checks: the six fields are packed into bytes and passed as they are
@@ -159,6 +181,7 @@ def separate(a: Circle, b: Circle, *, precision: Precision = "double") -> bool:
     and were moved, False (nothing changed) otherwise.
     """
     ca, cb = circle_to_c(a, precision), circle_to_c(b, precision)
+    _not_both_immovable(a, b, "separate")
     code = check(_f(precision, "cc_separate")(byref(ca), byref(cb)), "separate")
     if code == _lib.OVERLAP:
         store_circle(a, ca)
@@ -173,6 +196,8 @@ def respond(a: Circle, b: Circle, contact: Contact, restitution: float = 1.0, *,
     Returns True when an impulse was applied, False when they were not approaching.
     """
     ca, cb, cc = circle_to_c(a, precision), circle_to_c(b, precision), contact_to_c(contact, precision)
+    _not_both_immovable(a, b, "respond")
+    _unit_normal(contact, precision, "respond")
     code = check(_f(precision, "cc_respond")(byref(ca), byref(cb), byref(cc), _errors.restitution(restitution, context="respond")), "respond")
     if code == _lib.HIT:
         store_circle(a, ca)
@@ -183,6 +208,11 @@ def respond(a: Circle, b: Circle, contact: Contact, restitution: float = 1.0, *,
 def respond_segment(c: Circle, contact: Contact, restitution: float = 1.0, *, precision: Precision = "double") -> bool:
     """Bounces c off an immovable wall whose normal (circle towards wall) is contact.normal."""
     cc, ct = circle_to_c(c, precision), contact_to_c(contact, precision)
+    if c.immovable:
+        raise _errors.invalid(
+            "respond_segment", "c is immovable (mass inf): an immovable circle cannot respond to an immovable wall"
+        )
+    _unit_normal(contact, precision, "respond_segment")
     code = check(_f(precision, "cc_respond_segment")(byref(cc), byref(ct), _errors.restitution(restitution, context="respond_segment")), "respond_segment")
     if code == _lib.HIT:
         store_circle(c, cc)

@@ -6,44 +6,184 @@ import ctypes
 import math
 import struct
 from dataclasses import dataclass
-from typing import Iterable, Literal, NamedTuple, Union
+from typing import Iterable, Literal, Optional, Tuple, Union
+
+import numpy as np
 
 from . import _errors, _lib
 
 Precision = Literal["double", "float"]
 
 
-class Vec2(NamedTuple):
-    """A 2D vector: ``v.x``, ``v.y``, and still a tuple (``x, y = v``, ``v == (1.0, 2.0)``)."""
+class Vec2(Tuple[float, float]):
+    """A 2D vector of two floats: ``v.x``, ``v.y``, with the arithmetic of a vector.
 
-    x: float
-    y: float
+    ``a + b``, ``a - b``, ``-a``, ``2 * a``, ``a * 2``, ``a / 2``, ``a.dot(b)``, ``a.cross(b)``,
+    ``a.length``, ``a.normalized()``; ``b`` may be any pair of numbers (``a + (1, 0)``). Still a
+    tuple of two floats, as in 1.1: ``x, y = v``, ``v[0]``, ``v == (1.0, 2.0)``,
+    ``hash(v) == hash((1.0, 2.0))`` (a dict key), ``np.asarray(v)``. A tuple's own ``+`` (which
+    would concatenate) and ``*`` (which would repeat) are replaced by the vector's.
+    """
+
+    __slots__ = ()
+    _fields = ("x", "y")
+
+    def __new__(cls, x: float = 0.0, y: float = 0.0) -> "Vec2":
+        return _new_tuple(cls, (_errors.number(x, "x", "Vec2"), _errors.number(y, "y", "Vec2")))
+
+    @property
+    def x(self) -> float:
+        """The x component."""
+        return self[0]
+
+    @property
+    def y(self) -> float:
+        """The y component."""
+        return self[1]
+
+    def __repr__(self) -> str:
+        return f"Vec2(x={self[0]!r}, y={self[1]!r})"
+
+    def __getnewargs__(self) -> "tuple[float, float]":  # pickle and copy: Vec2(x, y)
+        return (self[0], self[1])
+
+    def _replace(self, **changes: float) -> "Vec2":
+        """A copy with some components changed (as a NamedTuple's ``_replace``)."""
+        unknown = set(changes) - {"x", "y"}
+        if unknown:
+            raise TypeError(f"Vec2._replace: no component {sorted(unknown)[0]!r}")
+        return Vec2(changes.get("x", self[0]), changes.get("y", self[1]))
+
+    def _asdict(self) -> "dict[str, float]":
+        """``{"x": x, "y": y}`` (as a NamedTuple's ``_asdict``)."""
+        return {"x": self[0], "y": self[1]}
+
+    # ---- arithmetic ----------------------------------------------------------------------
+
+    def __add__(self, other: object) -> "Vec2":
+        o = _pair_or_none(other)
+        if o is None:
+            return NotImplemented
+        return _v2(self[0] + o[0], self[1] + o[1])
+
+    def __radd__(self, other: object) -> "Vec2":
+        return self.__add__(other)
+
+    def __sub__(self, other: object) -> "Vec2":
+        o = _pair_or_none(other)
+        if o is None:
+            return NotImplemented
+        return _v2(self[0] - o[0], self[1] - o[1])
+
+    def __rsub__(self, other: object) -> "Vec2":
+        o = _pair_or_none(other)
+        if o is None:
+            return NotImplemented
+        return _v2(o[0] - self[0], o[1] - self[1])
+
+    def __mul__(self, k: object) -> "Vec2":
+        f = _scalar_or_none(k)
+        if f is None:
+            return NotImplemented
+        return _v2(self[0] * f, self[1] * f)
+
+    def __rmul__(self, k: object) -> "Vec2":
+        return self.__mul__(k)
+
+    def __truediv__(self, k: object) -> "Vec2":
+        f = _scalar_or_none(k)
+        if f is None:
+            return NotImplemented
+        return _v2(self[0] / f, self[1] / f)
+
+    def __neg__(self) -> "Vec2":
+        return _v2(-self[0], -self[1])
+
+    def __pos__(self) -> "Vec2":
+        return self
+
+    def __abs__(self) -> float:
+        return self.length
+
+    def dot(self, other: Iterable[float]) -> float:
+        """The dot product with another vector (any pair of numbers)."""
+        o = vec2(other, "other")
+        return self[0] * o[0] + self[1] * o[1]
+
+    def cross(self, other: Iterable[float]) -> float:
+        """The z component of the cross product, ``x * other.y - y * other.x``."""
+        o = vec2(other, "other")
+        return self[0] * o[1] - self[1] * o[0]
+
+    @property
+    def length(self) -> float:
+        """The Euclidean length (``abs(v)`` too), without overflow for large components."""
+        return math.hypot(self[0], self[1])
+
+    @property
+    def length_squared(self) -> float:
+        """``x * x + y * y``."""
+        return self[0] * self[0] + self[1] * self[1]
+
+    def normalized(self) -> "Vec2":
+        """The unit vector along this one; ``ZeroDivisionError`` for the zero vector."""
+        n = self.length
+        if n == 0.0:
+            raise ZeroDivisionError("Vec2.normalized: the zero vector has no direction")
+        return _v2(self[0] / n, self[1] / n)
 
 
 _new_tuple = tuple.__new__
 
 
 def _v2(x: float, y: float) -> Vec2:
-    """Vec2(x, y) without NamedTuple.__new__'s argument handling (twice as fast)."""
+    """Vec2(x, y) of two floats without the checks (twice as fast): for the library's outputs."""
     return _new_tuple(Vec2, (x, y))
 
 
-def vec2(v: Iterable[float], name: str = "vector") -> Vec2:
-    """(x, y) as a Vec2 of two floats; anything else is a ValueError."""
-    if isinstance(v, (str, bytes)):
-        raise ValueError(f"{name} must be a pair of numbers (x, y), got {v!r}")
-    try:
-        x, y = v
-        return _v2(float(x), float(y))
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a pair of numbers (x, y), got {v!r}") from None
+def _scalar_or_none(k: object) -> Optional[float]:
+    """k as a float when it is a real number (not a bool, str or vector), else None."""
+    if type(k) is float:
+        return k
+    if isinstance(k, (bool, str, bytes, tuple, list)) or not isinstance(k, (int, float, np.floating, np.integer)):
+        return None
+    return float(k)
+
+
+def _pair_or_none(v: object) -> Optional["tuple[float, float]"]:
+    """v as two floats when it is a Vec2 or a pair of real numbers, else None."""
+    if type(v) is Vec2:
+        return v
+    if isinstance(v, (tuple, list)) and len(v) == 2:
+        x, y = _scalar_or_none(v[0]), _scalar_or_none(v[1])
+        if x is not None and y is not None:
+            return (x, y)
+    return None
+
+
+def vec2(v: Iterable[float], name: str = "vector", context: str = "") -> Vec2:
+    """(x, y) as a Vec2 of two floats. Anything but a pair of real numbers is a TypeError naming
+    the argument (a string, numbers as strings, bools, None); a sequence of another length is a
+    ValueError."""
+    if type(v) is Vec2:
+        return v
+    where = f"{context}: " if context else ""
+    if isinstance(v, (str, bytes)) or not isinstance(v, Iterable):
+        raise TypeError(f"{where}{name} must be a pair of real numbers (x, y), got {v!r}")
+    items = list(v)
+    if len(items) != 2:
+        raise ValueError(f"{where}{name} must be a pair of real numbers (x, y), got {len(items)} values: {v!r}")
+    x, y = _scalar_or_none(items[0]), _scalar_or_none(items[1])
+    if x is None or y is None:
+        raise TypeError(f"{where}{name} must be a pair of real numbers (x, y), got {v!r}")
+    return _v2(x, y)
 
 
 def finite_vec2(v: Iterable[float], name: str, context: str = "") -> Vec2:
     """A Vec2 whose components are finite, else CC_ERR_INVALID naming the argument."""
-    r = v if type(v) is Vec2 else vec2(v, name)
-    if not (math.isfinite(r.x) and math.isfinite(r.y)):
-        raise _errors.invalid(context, f"{name} must be finite, got ({_errors.show(r.x)}, {_errors.show(r.y)})")
+    r = vec2(v, name, context)
+    if not (math.isfinite(r[0]) and math.isfinite(r[1])):
+        raise _errors.invalid(context, f"{name} must be finite, got ({_errors.show(r[0])}, {_errors.show(r[1])})")
     return r
 
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 import copy as _copy
 import ctypes
 import dataclasses
+import math
 import struct
 import sys
 import threading
@@ -14,6 +15,7 @@ from typing import Any, Callable, Dict, Iterable, List, Literal, Optional
 import numpy as np
 
 from . import _errors, _lib
+from ._compat import CallableFloat, CallableInt, CallableVec2
 from ._errors import CircleCollideError, check
 from ._types import Circle, Vec2, circle_from_c, circle_to_c, finite_vec2
 
@@ -24,6 +26,8 @@ MODES = {"exact": 0, "swept": 1, "discrete": 2}
 #: restitution_mix: how a contact's restitution is made from its two sides' (CC_MIX_*)
 MIXES = {"min": _lib.MIX_MIN, "max": _lib.MIX_MAX, "product": _lib.MIX_PRODUCT, "mean": _lib.MIX_MEAN}
 ALL_BITS = 0xFFFFFFFF
+#: the most circles (and walls) a world holds (the header's cc_world_def: 2^26)
+MAX_CAPACITY = 1 << 26
 
 
 @dataclass(frozen=True)
@@ -191,20 +195,25 @@ class World:
         period: Iterable[float] = (0.0, 0.0),
         callbacks: Optional[bool] = None,
     ) -> None:
-        if mode not in MODES:
-            raise ValueError(f"mode must be one of {sorted(MODES)}, got {mode!r}")
-        if restitution_mix not in MIXES:
-            raise ValueError(f"restitution_mix must be one of {sorted(MIXES)}, got {restitution_mix!r}")
+        for name, v, names in (("mode", mode, MODES), ("restitution_mix", restitution_mix, MIXES)):
+            if not isinstance(v, str):
+                raise TypeError(f"World: {name} must be a str, one of {sorted(names)}, got {v!r}")
+            if v not in names:
+                raise ValueError(f"World: {name} must be one of {sorted(names)}, got {v!r}")
+        _errors.callback(on_contact, "on_contact", "World")
+        _errors.callback(on_sensor, "on_sensor", "World")
+        if callbacks is not None:
+            _errors.boolean(callbacks, "callbacks", "World")
         d, self._lib_def_size = _lib.world_def_defaults()
-        d.max_circles = _c_int(max_circles, "max_circles")
-        d.max_segments = _c_int(max_segments, "max_segments")
+        d.max_circles = _capacity(max_circles, "max_circles")
+        d.max_segments = _capacity(max_segments, "max_segments")
         d.mode = MODES[mode]
         d.restitution = _errors.restitution(restitution, context="World")
         d.rest_speed = _errors.nonneg_finite(rest_speed, "rest_speed", "World")
         d.cell_size = _errors.nonneg_finite(cell_size, "cell_size", "World")
         if max_events is not None:
-            if not 0 < int(max_events) < 2**64:
-                raise ValueError("max_events must be a positive integer")
+            if not 0 < _errors.integer(max_events, "max_events", "World") < 2**64:
+                raise _errors.invalid("World", f"max_events must be an int in [1, 2^64), got {max_events!r}")
             d.max_events = int(max_events)
         d.rolling_decel = _errors.nonneg_finite(rolling_decel, "rolling_decel", "World")
         d.restitution_mix = MIXES[restitution_mix]
@@ -241,7 +250,9 @@ class World:
         d.user = None
         size = L.cc_world_size(byref(d))
         if size == 0:
-            raise CircleCollideError(_lib.ERR_INVALID, "World")
+            status = ctypes.c_int(0)  # the library's code for the def, which its size cannot say
+            L.cc_world_init(None, 0, byref(d), byref(status))
+            raise _world_refusal(status.value, px, py, d.cell_size)
         # 16-byte alignment: over-allocate and start at the first aligned address. numpy's zeros
         # come from calloc, whose large blocks are fresh pages zeroed by the system when first
         # touched: a world of a million circles (217 MB) costs nothing until it is used, where
@@ -273,6 +284,7 @@ class World:
         self.max_segments = d.max_segments
         self.mode = mode
         self.period: Vec2 = Vec2(px, py)
+        self._cell_size = d.cell_size
         # cc_circle is 6 doubles (pos.x, pos.y, vel.x, vel.y, radius, mass): the scratch rows
         # are a float64 table (zeroed lazily, as the world) seen by ctypes as cc_circle[],
         # made once (np.ctypeslib.as_array per call parses the struct's format each time:
@@ -353,7 +365,7 @@ class World:
             "platform": _platform(),
             "def": dict(self._def_args),
             "memory": self._memory(),
-            "hash": self.hash(),
+            "hash": int(self.hash),
         }
         return (_unpickle_world, (state,))
 
@@ -401,9 +413,9 @@ class World:
 
     def _mutating(self, context: str) -> None:
         """Refuses a change of the world from inside on_contact / on_sensor (the library would
-        return CC_ERR_INVALID and do nothing): says so instead of 'invalid argument'."""
+        return CC_ERR_BUSY, or CC_ERR_INVALID for a 1.1 def, and do nothing): says so."""
         if self._in_callback:
-            raise _errors.invalid(
+            raise _errors.busy(
                 context,
                 f"{context} called from a callback (on_contact/on_sensor): the world cannot be changed "
                 "there; record what you need and act after the call that fired the callback returns",
@@ -420,12 +432,27 @@ class World:
 
     # ---- building the scene -------------------------------------------------------------
 
+    def _placing(self, code: int, circle: Circle, context: str) -> int:
+        """The result of add_circle or set_circle, a refusal named: a Circle is valid by
+        construction and calls from a callback are refused before the library is asked, so
+        the library's CC_ERR_RANGE (CC_ERR_INVALID from a 1.1 library) here is the period."""
+        if code in (_lib.ERR_RANGE, _lib.ERR_INVALID) and (self.period[0] > 0 or self.period[1] > 0):
+            self._error = None
+            d = 2.0 * circle.radius
+            raise _errors.out_of_range(
+                context,
+                f"a circle of radius {_errors.show(circle.radius)} is too wide for the period "
+                f"({_errors.show(self.period[0])}, {_errors.show(self.period[1])}): along a periodic axis the "
+                f"period must be at least 2 d + max(1.0625 d, cell_size) = {_errors.show(2 * d + max(1.0625 * d, self._cell_size))}",
+            )
+        return self._firing(code, context)
+
     def add_circle(self, circle: Circle) -> int:
         """Adds a circle (its state at the current world time); returns its id."""
         self._mutating("add_circle")
         c = circle_to_c(circle)
         self._error = None
-        return self._firing(self._call(L.cc_world_add_circle, self._w, byref(c)), "add_circle")
+        return self._placing(self._call(L.cc_world_add_circle, self._w, byref(c)), circle, "add_circle")
 
     #: rows per C call of add_circles: a chunk's table of cc_circle (48 bytes a row) stays at
     #: 12 MiB however many rows come
@@ -529,7 +556,7 @@ class World:
         self._mutating("set_circle")
         c = circle_to_c(circle)
         self._error = None
-        self._firing(self._call(L.cc_world_set_circle, self._w, _c_int(id, "id"), byref(c)), "set_circle")
+        self._placing(self._call(L.cc_world_set_circle, self._w, _c_int(id, "id"), byref(c)), circle, "set_circle")
 
     def segment(self, id: int) -> tuple[Vec2, Vec2]:
         """The wall's end points."""
@@ -545,8 +572,24 @@ class World:
         self._mutating("step")
         dt = _errors.nonneg_finite(dt, "dt", "step")
         self._error = None
-        code = self._firing(self._call(L.cc_world_step, self._w, dt), "step")
-        return code != _lib.EVENT_LIMIT
+        code = self._call(L.cc_world_step, self._w, dt)
+        if code in (_lib.ERR_RANGE, _lib.ERR_INVALID):  # dt is valid and this is no callback: a limit
+            self._error = None
+            raise _errors.out_of_range("step", self._step_limit(dt))
+        return self._firing(code, "step") != _lib.EVENT_LIMIT
+
+    def _step_limit(self, dt: float) -> str:
+        """Which of the header's limits on a step (cc_world_step) a refused valid dt met."""
+        now = self.time
+        if not math.isfinite(now + dt):
+            return f"dt = {_errors.show(dt)} at world time {_errors.show(now)}: the world time would overflow"
+        if self.mode == "swept" and (self.period[0] > 0 or self.period[1] > 0):
+            return (
+                f"dt = {_errors.show(dt)} would carry a circle half a period or more "
+                f"(period ({_errors.show(self.period[0])}, {_errors.show(self.period[1])})), which a periodic "
+                "SWEPT world cannot sweep: take shorter steps"
+            )
+        return f"dt = {_errors.show(dt)} would carry a circle past 2^1017 (about 1.4e306) in a coordinate"
 
     @property
     def time(self) -> float:
@@ -625,7 +668,7 @@ class World:
             _errors.nonneg_finite(new.rolling_decel, "rolling_decel", "set_circle_props"),
             _u32(new.category, "category"),
             _u32(new.mask, "mask"),
-            1 if new.sensor else 0,
+            1 if _errors.boolean(new.sensor, "sensor", "set_circle_props") else 0,
         )
         self._error = None
         self._firing(
@@ -659,19 +702,27 @@ class World:
     # ---- queries and state --------------------------------------------------------------
 
     def cast_circle(
-        self, p: Iterable[float], d: Iterable[float], radius: float = 0.0, mask: int = ALL_BITS
+        self,
+        p: Iterable[float],
+        d: Iterable[float],
+        radius: float = 0.0,
+        mask: int = ALL_BITS,
+        *,
+        ignore: Optional[int] = None,
     ) -> Optional[CastHit]:
         """The first circle or wall that a circle of ``radius`` (0: a ray) moving from p to
         p + d touches, the world held still at its current time; only bodies whose category
-        meets ``mask``, sensors skipped. ``None`` when it touches nothing."""
+        meets ``mask``, sensors skipped, and never circle ``ignore`` (an id: a cast from the cue
+        ball's centre leaves the cue ball out). ``None`` when it touches nothing."""
         out = _lib.cc_cast_hit()
+        f = _filter(mask, ignore)
         code = check(
-            L.cc_world_cast_circle(
+            L.cc_world_cast_circle_filtered(
                 self._w,
                 _lib.cc_vec2(*finite_vec2(p, "p", "cast_circle")),
                 _errors.nonneg_finite(radius, "radius", "cast_circle"),
                 _lib.cc_vec2(*finite_vec2(d, "d", "cast_circle")),
-                _u32(mask, "mask"),
+                byref(f),
                 byref(out),
             ),
             "cast_circle",
@@ -696,24 +747,41 @@ class World:
                 return list(ids[:n])
             cap = n
 
-    def query_circle(self, c: Iterable[float], radius: float = 0.0, mask: int = ALL_BITS) -> List[int]:
+    def query_circle(
+        self, c: Iterable[float], radius: float = 0.0, mask: int = ALL_BITS, *, ignore: Optional[int] = None
+    ) -> List[int]:
         """Ids (increasing) of the circles overlapping the disc of centre c and ``radius``
-        (0: the circles whose interior holds c), whose category meets ``mask``, sensors included."""
+        (0: the circles whose interior holds c), whose category meets ``mask``, sensors included,
+        circle ``ignore`` (an id) left out."""
         cv = _lib.cc_vec2(*finite_vec2(c, "c", "query_circle"))
-        r, m = _errors.nonneg_finite(radius, "radius", "query_circle"), _u32(mask, "mask")
-        return self._ids_query(lambda ids, cap: L.cc_world_query_circle(self._w, cv, r, m, ids, cap), "query_circle")
+        r, f = _errors.nonneg_finite(radius, "radius", "query_circle"), _filter(mask, ignore)
+        return self._ids_query(
+            lambda ids, cap: L.cc_world_query_circle_filtered(self._w, cv, r, byref(f), ids, cap), "query_circle"
+        )
 
-    def query_box(self, lo: Iterable[float], hi: Iterable[float], mask: int = ALL_BITS) -> List[int]:
+    def query_box(
+        self, lo: Iterable[float], hi: Iterable[float], mask: int = ALL_BITS, *, ignore: Optional[int] = None
+    ) -> List[int]:
         """Ids (increasing) of the circles that meet the closed box [lo, hi] (exactly: a circle
-        touching it counts), whose category meets ``mask``, sensors included."""
-        lv, hv = _lib.cc_vec2(*finite_vec2(lo, "lo", "query_box")), _lib.cc_vec2(*finite_vec2(hi, "hi", "query_box"))
-        m = _u32(mask, "mask")
-        return self._ids_query(lambda ids, cap: L.cc_world_query_box(self._w, lv, hv, m, ids, cap), "query_box")
+        touching it counts), whose category meets ``mask``, sensors included, circle ``ignore``
+        left out. lo <= hi in both coordinates."""
+        lo2, hi2 = finite_vec2(lo, "lo", "query_box"), finite_vec2(hi, "hi", "query_box")
+        for k, axis in ((0, "x"), (1, "y")):
+            if not lo2[k] <= hi2[k]:
+                raise _errors.invalid(
+                    "query_box", f"lo.{axis} must be <= hi.{axis}, got lo = {tuple(lo2)}, hi = {tuple(hi2)}"
+                )
+        lv, hv, f = _lib.cc_vec2(*lo2), _lib.cc_vec2(*hi2), _filter(mask, ignore)
+        return self._ids_query(
+            lambda ids, cap: L.cc_world_query_box_filtered(self._w, lv, hv, byref(f), ids, cap), "query_box"
+        )
 
+    @property
     def hash(self) -> int:
         """64-bit hash of the simulation state (cc_world_hash): equal for equal states, for
-        replays and lock-step runs (compare hashes to find where two runs part)."""
-        return int(L.cc_world_hash(self._w))
+        replays and lock-step runs (compare hashes to find where two runs part). A property since
+        1.2 (``w.hash()``, 1.1's spelling, still works and warns)."""
+        return CallableInt(L.cc_world_hash(self._w))
 
     def unwrapped(self, id: int) -> Vec2:
         """Circle id's position without the periods taken off (its position along open axes)."""
@@ -837,19 +905,23 @@ class World:
 
         return write_gsd(self, path, mode, step, **options)
 
+    @property
     def kinetic_energy(self) -> float:
-        """Sum of m |v|^2 / 2 over the movable circles."""
+        """Sum of m |v|^2 / 2 over the movable circles. A property since 1.2 (``w.kinetic_energy()``,
+        1.1's spelling, still works and warns)."""
         t = self._table()
         m = t[:, 5]
         movable = np.isfinite(m)
-        return float(0.5 * np.sum(m[movable] * (t[movable, 2] ** 2 + t[movable, 3] ** 2)))
+        return CallableFloat(0.5 * np.sum(m[movable] * (t[movable, 2] ** 2 + t[movable, 3] ** 2)))
 
+    @property
     def momentum(self) -> Vec2:
-        """Sum of m v over the movable circles."""
+        """Sum of m v over the movable circles. A property since 1.2 (``w.momentum()``, 1.1's
+        spelling, still works and warns)."""
         t = self._table()
         m = t[:, 5]
         movable = np.isfinite(m)
-        return Vec2(float(np.sum(m[movable] * t[movable, 2])), float(np.sum(m[movable] * t[movable, 3])))
+        return CallableVec2(float(np.sum(m[movable] * t[movable, 2])), float(np.sum(m[movable] * t[movable, 3])))
 
 
 def _platform() -> str:
@@ -873,7 +945,7 @@ def _unpickle_world(state: Dict[str, Any]) -> World:
     if len(memory) != w._size:
         raise ValueError(f"circlecollide: the pickled world has {len(memory)} bytes, its def needs {w._size}")
     ctypes.memmove(w._addr, memory, w._size)
-    if w.hash() != state["hash"]:
+    if w.hash != state["hash"]:
         raise ValueError("circlecollide: the unpickled world's state hash differs from the pickled one's (corrupt pickle?)")
     return w
 
@@ -906,14 +978,46 @@ def _frozen(a: np.ndarray) -> np.ndarray:
 
 
 def _u32(v: int, name: str) -> int:
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not 0 <= int(v) <= ALL_BITS:
+    x = _errors.integer(v, name)
+    if not 0 <= x <= ALL_BITS:
         raise ValueError(f"{name} must be an int in [0, 0xFFFFFFFF], got {v!r}")
-    return int(v)
+    return x
 
 
 def _c_int(v: int, name: str) -> int:
-    if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not -(2**31) <= int(v) < 2**31:
+    x = _errors.integer(v, name)
+    if not -(2**31) <= x < 2**31:
         raise ValueError(f"{name} must be an int in the C int range, got {v!r}")
-    return int(v)
+    return x
+
+
+def _capacity(v: int, name: str) -> int:
+    """A world's capacity: an int in [0, 2^26] (the header's limit: CC_ERR_RANGE beyond)."""
+    x = _errors.integer(v, name, "World")
+    if x < 0:
+        raise _errors.invalid("World", f"{name} must be >= 0, got {x}")
+    if x > MAX_CAPACITY:
+        raise _errors.out_of_range("World", f"{name} must be at most 2^26 = {MAX_CAPACITY}, got {x}")
+    return x
+
+
+def _filter(mask: int, ignore: Optional[int]) -> Any:
+    """The cc_query_filter of a cast or query: the mask, and the id left out (None: none)."""
+    f = _lib.cc_query_filter()
+    f.struct_size = ctypes.sizeof(f)
+    f.mask = _u32(mask, "mask")
+    f.ignore = -1 if ignore is None else _c_int(ignore, "ignore")
+    return f
+
+
+def _world_refusal(code: int, px: float, py: float, cell_size: float) -> CircleCollideError:
+    """A def the library refused, whatever the binding checked: named where the cause is known
+    (a period not wider than cell_size, the one limit of the def it leaves to the library)."""
+    for p, axis in ((px, "x"), (py, "y")):
+        if p > 0 and not p > cell_size:
+            return _errors.out_of_range(
+                "World", f"period.{axis} = {_errors.show(p)} must be wider than cell_size = {_errors.show(cell_size)}"
+            )
+    return CircleCollideError(code or _lib.ERR_INVALID, "World")
 
 

@@ -45,6 +45,7 @@ int main(void) {
     F(cc_segment_props, category); F(cc_segment_props, mask);
     S(cc_cast_hit); F(cc_cast_hit, circle); F(cc_cast_hit, segment); F(cc_cast_hit, t);
     F(cc_cast_hit, point); F(cc_cast_hit, normal);
+    S(cc_query_filter); F(cc_query_filter, struct_size); F(cc_query_filter, mask); F(cc_query_filter, ignore);
     S(cc_vec2f); F(cc_vec2f, x); F(cc_vec2f, y);
     S(cc_circlef); F(cc_circlef, pos); F(cc_circlef, vel); F(cc_circlef, radius); F(cc_circlef, mass);
     S(cc_segmentf); F(cc_segmentf, a); F(cc_segmentf, b);
@@ -53,19 +54,19 @@ int main(void) {
     printf("];\n");
     printf("pub const C_MODES: [i32; 3] = [%d, %d, %d];\n", CC_MODE_EXACT, CC_MODE_SWEPT, CC_MODE_DISCRETE);
     printf("pub const C_VERSION: u32 = %u;\n", (unsigned)CC_VERSION);
-    printf("pub const C_CODES: [(&str, i32); 10] = [(\"CC_MISS\", %d), (\"CC_OK\", %d), (\"CC_HIT\", %d), "
+    printf("pub const C_CODES: [(&str, i32); 12] = [(\"CC_MISS\", %d), (\"CC_OK\", %d), (\"CC_HIT\", %d), "
            "(\"CC_OVERLAP\", %d), (\"CC_EVENT_LIMIT\", %d), (\"CC_ERR_INVALID\", %d), "
            "(\"CC_ERR_NOT_FOUND\", %d), (\"CC_ERR_FULL\", %d), (\"CC_ERR_MEMORY\", %d), "
-           "(\"CC_ERR_VERSION\", %d)];\n",
+           "(\"CC_ERR_VERSION\", %d), (\"CC_ERR_RANGE\", %d), (\"CC_ERR_BUSY\", %d)];\n",
            CC_MISS, CC_OK, CC_HIT, CC_OVERLAP, CC_EVENT_LIMIT, CC_ERR_INVALID, CC_ERR_NOT_FOUND,
-           CC_ERR_FULL, CC_ERR_MEMORY, CC_ERR_VERSION);
+           CC_ERR_FULL, CC_ERR_MEMORY, CC_ERR_VERSION, CC_ERR_RANGE, CC_ERR_BUSY);
     /* every integer macro of the header, by name (the tests check that the header defines no
      * other and that the Rust constants have these values) */
 #define K(M) printf("    (\"%s\", %lld),\n", #M, (long long)(M))
     printf("pub const C_CONSTANTS: &[(&str, i64)] = &[\n");
     K(CC_VERSION_MAJOR); K(CC_VERSION_MINOR); K(CC_VERSION_PATCH); K(CC_VERSION);
     K(CC_MISS); K(CC_OK); K(CC_HIT); K(CC_OVERLAP); K(CC_EVENT_LIMIT); K(CC_ERR_INVALID);
-    K(CC_ERR_NOT_FOUND); K(CC_ERR_FULL); K(CC_ERR_MEMORY); K(CC_ERR_VERSION);
+    K(CC_ERR_NOT_FOUND); K(CC_ERR_FULL); K(CC_ERR_MEMORY); K(CC_ERR_VERSION); K(CC_ERR_RANGE); K(CC_ERR_BUSY);
     K(CC_MIX_MIN); K(CC_MIX_MAX); K(CC_MIX_PRODUCT); K(CC_MIX_MEAN); K(CC_MAX_SENSORS);
     printf("];\n");
     return 0;

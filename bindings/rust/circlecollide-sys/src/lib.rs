@@ -26,6 +26,9 @@ pub const CC_ERR_NOT_FOUND: c_int = -2;
 pub const CC_ERR_FULL: c_int = -3;
 pub const CC_ERR_MEMORY: c_int = -4;
 pub const CC_ERR_VERSION: c_int = -5;
+// 1.2: for a world made from a def past 1.1's (the header's Results)
+pub const CC_ERR_RANGE: c_int = -6;
+pub const CC_ERR_BUSY: c_int = -7;
 
 // ---- value types -------------------------------------------------------------------------
 
@@ -182,6 +185,15 @@ pub struct cc_cast_hit {
     pub normal: cc_vec2,
 }
 
+// 1.2
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct cc_query_filter {
+    pub struct_size: usize,
+    pub mask: u32,
+    pub ignore: c_int,
+}
+
 // ---- single precision --------------------------------------------------------------------
 
 #[repr(C)]
@@ -230,9 +242,29 @@ extern "C" {
     pub fn cc_respond(a: *mut cc_circle, b: *mut cc_circle, contact: *const cc_contact, restitution: f64) -> c_int;
     pub fn cc_respond_segment(c: *mut cc_circle, contact: *const cc_contact, restitution: f64) -> c_int;
     pub fn cc_closest_point_on_segment(p: cc_vec2, s: *const cc_segment) -> cc_vec2;
-    pub fn cc_sweep_many(n: usize, a: *const cc_circle_soa, b: *const cc_circle_soa, t_max: f64, t_out: *mut f64, result_out: *mut c_int) -> c_long;
-    pub fn cc_sweep_rolling(a: *const cc_circle, decel_a: f64, b: *const cc_circle, decel_b: f64, t_max: f64, out: *mut cc_contact) -> c_int;
-    pub fn cc_sweep_segment_rolling(c: *const cc_circle, decel: f64, s: *const cc_segment, t_max: f64, out: *mut cc_contact) -> c_int;
+    pub fn cc_sweep_many(
+        n: usize,
+        a: *const cc_circle_soa,
+        b: *const cc_circle_soa,
+        t_max: f64,
+        t_out: *mut f64,
+        result_out: *mut c_int,
+    ) -> c_long;
+    pub fn cc_sweep_rolling(
+        a: *const cc_circle,
+        decel_a: f64,
+        b: *const cc_circle,
+        decel_b: f64,
+        t_max: f64,
+        out: *mut cc_contact,
+    ) -> c_int;
+    pub fn cc_sweep_segment_rolling(
+        c: *const cc_circle,
+        decel: f64,
+        s: *const cc_segment,
+        t_max: f64,
+        out: *mut cc_contact,
+    ) -> c_int;
     pub fn cc_rolling_advance(c: *mut cc_circle, decel: f64, t: f64) -> c_int;
 
     pub fn cc_detect_staticf(a: *const cc_circlef, b: *const cc_circlef, out: *mut cc_contactf) -> c_int;
@@ -242,8 +274,21 @@ extern "C" {
     pub fn cc_respondf(a: *mut cc_circlef, b: *mut cc_circlef, contact: *const cc_contactf, restitution: f32) -> c_int;
     pub fn cc_respond_segmentf(c: *mut cc_circlef, contact: *const cc_contactf, restitution: f32) -> c_int;
     pub fn cc_closest_point_on_segmentf(p: cc_vec2f, s: *const cc_segmentf) -> cc_vec2f;
-    pub fn cc_sweep_rollingf(a: *const cc_circlef, decel_a: f32, b: *const cc_circlef, decel_b: f32, t_max: f32, out: *mut cc_contactf) -> c_int;
-    pub fn cc_sweep_segment_rollingf(c: *const cc_circlef, decel: f32, s: *const cc_segmentf, t_max: f32, out: *mut cc_contactf) -> c_int;
+    pub fn cc_sweep_rollingf(
+        a: *const cc_circlef,
+        decel_a: f32,
+        b: *const cc_circlef,
+        decel_b: f32,
+        t_max: f32,
+        out: *mut cc_contactf,
+    ) -> c_int;
+    pub fn cc_sweep_segment_rollingf(
+        c: *const cc_circlef,
+        decel: f32,
+        s: *const cc_segmentf,
+        t_max: f32,
+        out: *mut cc_contactf,
+    ) -> c_int;
     pub fn cc_rolling_advancef(c: *mut cc_circlef, decel: f32, t: f32) -> c_int;
 }
 
@@ -257,7 +302,12 @@ extern "C" {
     /// `cc_world_def_init` macro calls with `sizeof(cc_world_def)`).
     pub fn cc_world_def_init_sized(def: *mut cc_world_def, struct_size: usize);
     pub fn cc_world_size(def: *const cc_world_def) -> usize;
-    pub fn cc_world_init(memory: *mut c_void, bytes: usize, def: *const cc_world_def, status: *mut c_int) -> *mut cc_world;
+    pub fn cc_world_init(
+        memory: *mut c_void,
+        bytes: usize,
+        def: *const cc_world_def,
+        status: *mut c_int,
+    ) -> *mut cc_world;
     pub fn cc_world_add_circle(w: *mut cc_world, c: *const cc_circle) -> c_int;
     pub fn cc_world_add_segment(w: *mut cc_world, s: *const cc_segment) -> c_int;
     pub fn cc_world_remove_circle(w: *mut cc_world, id: c_int) -> c_int;
@@ -275,14 +325,59 @@ extern "C" {
     pub fn cc_world_get_segment_props(w: *const cc_world, id: c_int, out: *mut cc_segment_props) -> c_int;
     pub fn cc_world_set_segment_props(w: *mut cc_world, id: c_int, p: *const cc_segment_props) -> c_int;
 
-    pub fn cc_world_cast_circle(w: *const cc_world, p: cc_vec2, radius: f64, d: cc_vec2, mask: u32, out: *mut cc_cast_hit) -> c_int;
-    pub fn cc_world_query_circle(w: *const cc_world, c: cc_vec2, radius: f64, mask: u32, ids: *mut c_int, capacity: c_int) -> c_int;
-    pub fn cc_world_query_box(w: *const cc_world, lo: cc_vec2, hi: cc_vec2, mask: u32, ids: *mut c_int, capacity: c_int) -> c_int;
+    pub fn cc_world_cast_circle(
+        w: *const cc_world,
+        p: cc_vec2,
+        radius: f64,
+        d: cc_vec2,
+        mask: u32,
+        out: *mut cc_cast_hit,
+    ) -> c_int;
+    pub fn cc_world_query_circle(
+        w: *const cc_world,
+        c: cc_vec2,
+        radius: f64,
+        mask: u32,
+        ids: *mut c_int,
+        capacity: c_int,
+    ) -> c_int;
+    pub fn cc_world_query_box(
+        w: *const cc_world,
+        lo: cc_vec2,
+        hi: cc_vec2,
+        mask: u32,
+        ids: *mut c_int,
+        capacity: c_int,
+    ) -> c_int;
     pub fn cc_world_hash(w: *const cc_world) -> u64;
 
     // 1.2
     pub fn cc_world_add_circles(w: *mut cc_world, c: *const cc_circle, n: c_int, ids_out: *mut c_int, failed: *mut c_int) -> c_int;
     pub fn cc_world_get_unwrapped_all(w: *const cc_world, ids: *mut c_int, out: *mut cc_vec2, capacity: c_int) -> c_int;
+    pub fn cc_world_cast_circle_filtered(
+        w: *const cc_world,
+        p: cc_vec2,
+        radius: f64,
+        d: cc_vec2,
+        filter: *const cc_query_filter,
+        out: *mut cc_cast_hit,
+    ) -> c_int;
+    pub fn cc_world_query_circle_filtered(
+        w: *const cc_world,
+        c: cc_vec2,
+        radius: f64,
+        filter: *const cc_query_filter,
+        ids: *mut c_int,
+        capacity: c_int,
+    ) -> c_int;
+    pub fn cc_world_query_box_filtered(
+        w: *const cc_world,
+        lo: cc_vec2,
+        hi: cc_vec2,
+        filter: *const cc_query_filter,
+        ids: *mut c_int,
+        capacity: c_int,
+    ) -> c_int;
 }
 
 /// True when this build of the library contains the world (cc_world_*).

@@ -48,7 +48,7 @@ fn main() -> Result<()> {
     // centre comes within pocket_r of theirs
     let mut pockets = Vec::new();
     for (x, y) in [(0.0, 0.0), (w / 2.0, 0.0), (w, 0.0), (0.0, h), (w / 2.0, h), (w, h)] {
-        let p = world.add_circle(&Circle::new(Vec2::new(x, y), Vec2::new(0.0, 0.0), pocket_r - r).immovable())?;
+        let p = world.add_circle(&Circle::new(Vec2::new(x, y), pocket_r - r).immovable())?;
         world.set_circle_props(p, &CircleProps { sensor: true, ..world.circle_props(p)? })?;
         pockets.push(p);
     }
@@ -58,12 +58,15 @@ fn main() -> Result<()> {
         for k in 0..=row {
             let x = 0.75 * w + row as f64 * gap * 0.866_025_403_784_438_6;
             let y = h / 2.0 + (k as f64 - row as f64 / 2.0) * gap;
-            world.add_circle(&Circle::new(Vec2::new(x, y), Vec2::new(0.0, 0.0), r).with_mass(0.17))?;
+            world.add_circle(&Circle::new(Vec2::new(x, y), r).with_mass(0.17))?;
         }
     }
-    let cue = world.add_circle(&Circle::new(Vec2::new(0.25 * w, h / 2.0 + 0.002), Vec2::new(8.0, 0.0), r).with_mass(0.17))?;
+    let cue = world.add_circle(
+        &Circle::new(Vec2::new(0.25 * w, h / 2.0 + 0.002), r).with_vel(Vec2::new(8.0, 0.0)).with_mass(0.17),
+    )?;
     let balls = |w: &World| w.circles().into_iter().filter(|(id, _)| !pockets.contains(id)).collect::<Vec<_>>();
-    let energy = |w: &World| balls(w).iter().map(|(_, c)| 0.5 * c.mass * (c.vel.x * c.vel.x + c.vel.y * c.vel.y)).sum::<f64>();
+    let energy =
+        |w: &World| balls(w).iter().map(|(_, c)| 0.5 * c.mass * (c.vel.x * c.vel.x + c.vel.y * c.vel.y)).sum::<f64>();
     let e0 = energy(&world);
     // steps of 10 ms until every ball rests (at most 60 s); pocketed balls leave after each
     println!("(every tenth contact is shown; all are counted)");
@@ -96,7 +99,10 @@ fn main() -> Result<()> {
         if c.vel.x == 0.0 && c.vel.y == 0.0 {
             println!("ball {:2}{tag:6} at ({:.4}, {:.4}), at rest", id.0, c.pos.x, c.pos.y);
         } else {
-            println!("ball {:2}{tag:6} at ({:.4}, {:.4}) moving ({:+.3e}, {:+.3e})", id.0, c.pos.x, c.pos.y, c.vel.x, c.vel.y);
+            println!(
+                "ball {:2}{tag:6} at ({:.4}, {:.4}) moving ({:+.3e}, {:+.3e})",
+                id.0, c.pos.x, c.pos.y, c.vel.x, c.vel.y
+            );
         }
     }
     println!("kinetic energy {e0:.6} J -> {:.6} J; state hash {:016x}", energy(&world), world.hash());

@@ -9,7 +9,10 @@ use core::ptr::NonNull;
 use std::any::Any;
 use std::panic::{catch_unwind, resume_unwind, AssertUnwindSafe};
 
-use crate::{check, sys, BatchError, Circle, ContactKind, Error, Result, Segment, Vec2};
+use crate::{cause, check, sys, BatchError, Circle, ContactKind, Error, Result, Segment, Vec2};
+
+/// The most circles (and walls) a world holds: 2^26 (the header's `cc_world_def`).
+pub const MAX_CAPACITY: usize = 1 << 26;
 
 /// How the world advances.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -250,6 +253,59 @@ pub struct CastHit {
     pub normal: Vec2,
 }
 
+/// Which circles a cast or a query looks at (`cc_query_filter`): those whose category meets
+/// `mask`, all but `ignore`. `QueryFilter::default()` is every category, nothing left out; a
+/// `u32` is the filter of that mask, so `w.cast_circle(p, d, 0.0, u32::MAX)` reads as before.
+///
+/// ```
+/// use circlecollide::*;
+/// let mut w = World::new(&WorldDef::default()).unwrap();
+/// let cue = w.add_circle(&Circle::new((0.0, 0.0), 1.0)).unwrap();
+/// let ball = w.add_circle(&Circle::new((10.0, 0.0), 1.0)).unwrap();
+/// // the cue ball's aiming line starts inside the cue ball: leave it out
+/// let hit = w.cast_circle((0.0, 0.0), (20.0, 0.0), 1.0, QueryFilter::default().ignoring(cue)).unwrap().unwrap();
+/// assert_eq!((hit.what, hit.t), (Other::Circle(ball), 0.4)); // its centre at x = 8: t = 8 / 20
+/// ```
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub struct QueryFilter {
+    /// Only circles (and walls) whose category meets it.
+    pub mask: u32,
+    /// A circle left out (a cast from a circle of the world leaves that circle out).
+    pub ignore: Option<CircleId>,
+}
+
+impl Default for QueryFilter {
+    fn default() -> Self {
+        QueryFilter { mask: u32::MAX, ignore: None }
+    }
+}
+
+impl From<u32> for QueryFilter {
+    fn from(mask: u32) -> Self {
+        QueryFilter { mask, ignore: None }
+    }
+}
+
+impl QueryFilter {
+    /// This filter with this mask.
+    pub fn with_mask(self, mask: u32) -> Self {
+        QueryFilter { mask, ..self }
+    }
+
+    /// This filter, leaving circle `id` out.
+    pub fn ignoring(self, id: CircleId) -> Self {
+        QueryFilter { ignore: Some(id), ..self }
+    }
+
+    fn to_c(self) -> sys::cc_query_filter {
+        sys::cc_query_filter {
+            struct_size: core::mem::size_of::<sys::cc_query_filter>(),
+            mask: self.mask,
+            ignore: self.ignore.map_or(-1, |id| id.0),
+        }
+    }
+}
+
 /// How a step ended.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum StepOutcome {
@@ -277,6 +333,7 @@ pub struct World<'cb> {
     w: NonNull<sys::cc_world>,
     slot: *mut Slot<'cb>, // owned (Box::into_raw); the C world holds it as `user`
     capacity: usize,
+    limits: Limits,
     _memory: Vec<Align16>, // the world lives here; a Vec's heap block never moves with World
     _cb: PhantomData<(Callback<'cb>, SensorCallback<'cb>)>,
 }
@@ -320,8 +377,70 @@ unsafe extern "C" fn sensor_trampoline(event: *const sys::cc_sensor_event, user:
     }
 }
 
-fn c_int_of(v: usize) -> Result<c_int> {
-    c_int::try_from(v).map_err(|_| Error { code: sys::CC_ERR_INVALID })
+/// What a world's refusals are judged by: its period, cell size and mode (src/cause.rs's rules
+/// for the world: the library names only the code).
+#[derive(Debug, Clone, Copy)]
+struct Limits {
+    period: Vec2,
+    cell_size: f64,
+    swept: bool,
+}
+
+impl Limits {
+    /// A refusal of add or set: a valid circle (the causes checked first) refused in a periodic
+    /// world is too wide for its period (CC_ERR_RANGE; CC_ERR_INVALID from a 1.1 library).
+    fn placing(&self, code: c_int, call: &'static str, c: &Circle) -> Error {
+        if let Some(detail) = cause::circle("c", c) {
+            return Error::new(code, call, detail);
+        }
+        if (code == sys::CC_ERR_RANGE || code == sys::CC_ERR_INVALID) && (self.period.x > 0.0 || self.period.y > 0.0) {
+            let d = 2.0 * c.radius;
+            let need = 2.0 * d + (1.0625 * d).max(self.cell_size);
+            return Error::new(
+                sys::CC_ERR_RANGE,
+                call,
+                format!(
+                    "a circle of radius {} is too wide for the period ({}, {}): a periodic axis needs at least 2 d + max(1.0625 d, cell_size) = {need}",
+                    c.radius, self.period.x, self.period.y
+                ),
+            );
+        }
+        Error::from_code(code, call)
+    }
+
+    /// A refusal of a step: a dt that is not finite and >= 0, else one of the header's limits.
+    fn stepping(&self, code: c_int, dt: f64, now: f64) -> Error {
+        const CALL: &str = "World::step";
+        if let Some(detail) = cause::nonneg_finite("dt", dt) {
+            return Error::new(code, CALL, detail);
+        }
+        if code != sys::CC_ERR_RANGE && code != sys::CC_ERR_INVALID {
+            return Error::from_code(code, CALL);
+        }
+        let detail = if !(now + dt).is_finite() {
+            format!("dt = {dt} at world time {now}: the world time would overflow")
+        } else if self.swept && (self.period.x > 0.0 || self.period.y > 0.0) {
+            format!(
+                "dt = {dt} would carry a circle half a period or more (period ({}, {})), which a periodic SWEPT world cannot sweep: take shorter steps",
+                self.period.x, self.period.y
+            )
+        } else {
+            format!("dt = {dt} would carry a circle past 2^1017 (about 1.4e306) in a coordinate")
+        };
+        Error::new(sys::CC_ERR_RANGE, CALL, detail)
+    }
+}
+
+/// A capacity: at most [`MAX_CAPACITY`].
+fn capacity(v: usize, name: &str) -> Result<c_int> {
+    if v > MAX_CAPACITY {
+        return Err(Error::new(
+            sys::CC_ERR_RANGE,
+            "World::new",
+            format!("{name} must be at most 2^26 = {MAX_CAPACITY}, got {v}"),
+        ));
+    }
+    Ok(v as c_int)
 }
 
 impl World<'static> {
@@ -339,8 +458,8 @@ impl<'cb> World<'cb> {
     /// use circlecollide::*;
     /// let mut hits = Vec::new();
     /// let mut w = World::with_callback(&WorldDef::default(), |e: &ContactEvent| hits.push(e.t)).unwrap();
-    /// w.add_circle(&Circle::new(Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), 1.0)).unwrap();
-    /// w.add_circle(&Circle::new(Vec2::new(10.0, 0.0), Vec2::new(-1.0, 0.0), 1.0)).unwrap();
+    /// w.add_circle(&Circle::new(Vec2::new(0.0, 0.0), 1.0).with_vel(Vec2::new(1.0, 0.0))).unwrap();
+    /// w.add_circle(&Circle::new(Vec2::new(10.0, 0.0), 1.0).with_vel(Vec2::new(-1.0, 0.0))).unwrap();
     /// w.step(10.0).unwrap();
     /// drop(w); // the borrow of `hits` ends with the world
     /// assert_eq!(hits, [4.0]);
@@ -375,9 +494,9 @@ impl<'cb> World<'cb> {
     ///     |e: &SensorEvent| sensed.push((e.begin, e.t)),
     /// )
     /// .unwrap();
-    /// let goal = w.add_circle(&Circle::new(Vec2::new(10.0, 0.0), Vec2::new(0.0, 0.0), 2.0).immovable()).unwrap();
+    /// let goal = w.add_circle(&Circle::new(Vec2::new(10.0, 0.0), 2.0).immovable()).unwrap();
     /// w.set_circle_props(goal, &CircleProps { sensor: true, ..w.circle_props(goal).unwrap() }).unwrap();
-    /// w.add_circle(&Circle::new(Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), 1.0)).unwrap();
+    /// w.add_circle(&Circle::new(Vec2::new(0.0, 0.0), 1.0).with_vel(Vec2::new(1.0, 0.0))).unwrap();
     /// w.step(20.0).unwrap();
     /// drop(w);
     /// // the ball's edge reaches the goal's at x = 7 and leaves it at x = 13, passing through
@@ -400,8 +519,8 @@ impl<'cb> World<'cb> {
     fn build(def: &WorldDef, cb: Option<Callback<'cb>>, sensor_cb: Option<SensorCallback<'cb>>) -> Result<World<'cb>> {
         let mut d = c_default();
         d.struct_size = core::mem::size_of::<sys::cc_world_def>();
-        d.max_circles = c_int_of(def.max_circles)?;
-        d.max_segments = c_int_of(def.max_segments)?;
+        d.max_circles = capacity(def.max_circles, "max_circles")?;
+        d.max_segments = capacity(def.max_segments, "max_segments")?;
         d.mode = match def.mode {
             Mode::Exact => sys::CC_MODE_EXACT,
             Mode::Swept => sys::CC_MODE_SWEPT,
@@ -421,7 +540,15 @@ impl<'cb> World<'cb> {
             core::ptr::null_mut()
         };
         // From here on, `slot` must be freed on every path: make the World first.
-        let mut world = World { w: NonNull::dangling(), slot, capacity: def.max_circles, _memory: Vec::new(), _cb: PhantomData };
+        let limits = Limits { period: def.period, cell_size: def.cell_size, swept: def.mode == Mode::Swept };
+        let mut world = World {
+            w: NonNull::dangling(),
+            slot,
+            capacity: def.max_circles,
+            limits,
+            _memory: Vec::new(),
+            _cb: PhantomData,
+        };
         if has_contact {
             d.on_contact = Some(trampoline);
         }
@@ -433,13 +560,16 @@ impl<'cb> World<'cb> {
         }
         let bytes = unsafe { sys::cc_world_size(&d) };
         if bytes == 0 {
-            return Err(Error { code: sys::CC_ERR_INVALID });
+            // the library's code for the def, which its size cannot say
+            let mut status: c_int = 0;
+            let _ = unsafe { sys::cc_world_init(core::ptr::null_mut(), 0, &d, &mut status) };
+            return Err(def_refusal(status, def));
         }
         world._memory = vec![Align16([0; 16]); bytes.div_ceil(16)];
         let mut status: c_int = 0;
         // SAFETY: the buffer is 16-byte aligned, at least `bytes` long, and outlives the world.
         let w = unsafe { sys::cc_world_init(world._memory.as_mut_ptr().cast(), bytes, &d, &mut status) };
-        world.w = NonNull::new(w).ok_or(Error { code: if status < 0 { status } else { sys::CC_ERR_INVALID } })?;
+        world.w = NonNull::new(w).ok_or_else(|| def_refusal(status, def))?;
         Ok(world)
     }
 
@@ -447,10 +577,13 @@ impl<'cb> World<'cb> {
     /// others is pushed apart at once (the contact callback may run, and a sensor callback when
     /// it lands in a sensor); a panic there is resumed before this returns.
     pub fn add_circle(&mut self, c: &Circle) -> Result<CircleId> {
-        let c: *const Circle = c;
-        let code = unsafe { sys::cc_world_add_circle(self.w.as_ptr(), c.cast()) };
+        let p: *const Circle = c;
+        let code = unsafe { sys::cc_world_add_circle(self.w.as_ptr(), p.cast()) };
         self.resume_panic();
-        check(code).map(CircleId)
+        if code < 0 {
+            return Err(self.limits.placing(code, "World::add_circle", c));
+        }
+        Ok(CircleId(code))
     }
 
     /// Adds the circles in order, in one C call (`cc_world_add_circles`): the ids and the world's
@@ -460,14 +593,14 @@ impl<'cb> World<'cb> {
     /// with no index). In EXACT an added circle that overlaps another may fire the contact
     /// callback, as `add_circle`'s does.
     pub fn add_circles(&mut self, circles: &[Circle]) -> core::result::Result<Vec<CircleId>, BatchError> {
-        let n = c_int::try_from(circles.len()).map_err(|_| BatchError { error: Error::invalid(), index: None })?;
+        let n = c_int::try_from(circles.len()).map_err(|_| BatchError { error: Error::new(sys::CC_ERR_INVALID, "World::add_circles", "more circles than a C int counts"), index: None })?;
         let mut ids = vec![0 as c_int; circles.len()];
         let mut failed: c_int = -1;
         let code = unsafe {
             sys::cc_world_add_circles(self.w.as_ptr(), circles.as_ptr().cast(), n, ids.as_mut_ptr(), &mut failed)
         };
         self.resume_panic();
-        match check(code) {
+        match check(code, "World::add_circles") {
             Ok(_) => Ok(ids.into_iter().map(CircleId).collect()),
             Err(error) => Err(BatchError { error, index: usize::try_from(failed).ok() }),
         }
@@ -475,36 +608,43 @@ impl<'cb> World<'cb> {
 
     /// Adds a static wall.
     pub fn add_segment(&mut self, s: &Segment) -> Result<SegmentId> {
-        let s: *const Segment = s;
-        check(unsafe { sys::cc_world_add_segment(self.w.as_ptr(), s.cast()) }).map(SegmentId)
+        let p: *const Segment = s;
+        let code = unsafe { sys::cc_world_add_segment(self.w.as_ptr(), p.cast()) };
+        if code < 0 {
+            return Err(cause::refused(code, "World::add_segment", [cause::segment(s)]));
+        }
+        Ok(SegmentId(code))
     }
 
     /// Removes a circle (a pocketed ball); other ids are unchanged. Not from a callback.
     pub fn remove_circle(&mut self, id: CircleId) -> Result<()> {
-        check(unsafe { sys::cc_world_remove_circle(self.w.as_ptr(), id.0) }).map(drop)
+        check(unsafe { sys::cc_world_remove_circle(self.w.as_ptr(), id.0) }, "World::remove_circle").map(drop)
     }
 
     /// The circle's state now.
     pub fn circle(&self, id: CircleId) -> Result<Circle> {
         let mut out = Circle::default();
         let p: *mut Circle = &mut out;
-        check(unsafe { sys::cc_world_get_circle(self.w.as_ptr(), id.0, p.cast()) })?;
+        check(unsafe { sys::cc_world_get_circle(self.w.as_ptr(), id.0, p.cast()) }, "World::circle")?;
         Ok(out)
     }
 
     /// Replaces the circle's state now (callbacks as for [`World::add_circle`]).
     pub fn set_circle(&mut self, id: CircleId, c: &Circle) -> Result<()> {
-        let c: *const Circle = c;
-        let code = unsafe { sys::cc_world_set_circle(self.w.as_ptr(), id.0, c.cast()) };
+        let p: *const Circle = c;
+        let code = unsafe { sys::cc_world_set_circle(self.w.as_ptr(), id.0, p.cast()) };
         self.resume_panic();
-        check(code).map(drop)
+        if code < 0 {
+            return Err(self.limits.placing(code, "World::set_circle", c));
+        }
+        Ok(())
     }
 
     /// The wall's end points.
     pub fn segment(&self, id: SegmentId) -> Result<Segment> {
         let mut out = Segment::default();
         let p: *mut Segment = &mut out;
-        check(unsafe { sys::cc_world_get_segment(self.w.as_ptr(), id.0, p.cast()) })?;
+        check(unsafe { sys::cc_world_get_segment(self.w.as_ptr(), id.0, p.cast()) }, "World::segment")?;
         Ok(out)
     }
 
@@ -513,7 +653,9 @@ impl<'cb> World<'cb> {
         let cap = self.capacity.max(1);
         let mut ids = vec![0 as c_int; cap];
         let mut out = vec![Circle::default(); cap];
-        let n = unsafe { sys::cc_world_get_circles(self.w.as_ptr(), ids.as_mut_ptr(), out.as_mut_ptr().cast(), cap as c_int) };
+        let n = unsafe {
+            sys::cc_world_get_circles(self.w.as_ptr(), ids.as_mut_ptr(), out.as_mut_ptr().cast(), cap as c_int)
+        };
         let n = (n.max(0) as usize).min(cap);
         ids.into_iter().zip(out).take(n).map(|(i, c)| (CircleId(i), c)).collect()
     }
@@ -545,7 +687,10 @@ impl<'cb> World<'cb> {
     pub fn step(&mut self, dt: f64) -> Result<StepOutcome> {
         let code = unsafe { sys::cc_world_step(self.w.as_ptr(), dt) };
         self.resume_panic();
-        Ok(if check(code)? == sys::CC_EVENT_LIMIT { StepOutcome::EventLimit } else { StepOutcome::Done })
+        if code < 0 {
+            return Err(self.limits.stepping(code, dt, self.time()));
+        }
+        Ok(if code == sys::CC_EVENT_LIMIT { StepOutcome::EventLimit } else { StepOutcome::Done })
     }
 
     /// Resumes a panic that a callback raised during the C call that just returned.
@@ -565,7 +710,8 @@ impl<'cb> World<'cb> {
 
     /// The counters since the world was made.
     pub fn stats(&self) -> Stats {
-        let mut s = sys::cc_world_stats { struct_size: core::mem::size_of::<sys::cc_world_stats>(), ..Default::default() };
+        let mut s =
+            sys::cc_world_stats { struct_size: core::mem::size_of::<sys::cc_world_stats>(), ..Default::default() };
         // cannot fail: the world and the struct are valid
         let _ = unsafe { sys::cc_world_get_stats(self.w.as_ptr(), &mut s) };
         Stats {
@@ -585,14 +731,15 @@ impl<'cb> World<'cb> {
     /// open axis, its position.
     pub fn unwrapped(&self, id: CircleId) -> Result<Vec2> {
         let mut out = sys::cc_vec2::default();
-        check(unsafe { sys::cc_world_get_unwrapped(self.w.as_ptr(), id.0, &mut out) })?;
+        check(unsafe { sys::cc_world_get_unwrapped(self.w.as_ptr(), id.0, &mut out) }, "World::unwrapped")?;
         Ok(Vec2::new(out.x, out.y))
     }
 
     /// The circle's properties.
     pub fn circle_props(&self, id: CircleId) -> Result<CircleProps> {
-        let mut p = sys::cc_circle_props { struct_size: core::mem::size_of::<sys::cc_circle_props>(), ..Default::default() };
-        check(unsafe { sys::cc_world_get_circle_props(self.w.as_ptr(), id.0, &mut p) })?;
+        let mut p =
+            sys::cc_circle_props { struct_size: core::mem::size_of::<sys::cc_circle_props>(), ..Default::default() };
+        check(unsafe { sys::cc_world_get_circle_props(self.w.as_ptr(), id.0, &mut p) }, "World::circle_props")?;
         Ok(CircleProps {
             restitution: p.restitution,
             rolling_decel: p.rolling_decel,
@@ -618,13 +765,19 @@ impl<'cb> World<'cb> {
         };
         let code = unsafe { sys::cc_world_set_circle_props(self.w.as_ptr(), id.0, &p) };
         self.resume_panic();
-        check(code).map(drop)
+        if code < 0 {
+            let causes =
+                [cause::restitution(props.restitution), cause::nonneg_finite("rolling_decel", props.rolling_decel)];
+            return Err(cause::refused(code, "World::set_circle_props", causes));
+        }
+        Ok(())
     }
 
     /// The wall's properties.
     pub fn segment_props(&self, id: SegmentId) -> Result<SegmentProps> {
-        let mut p = sys::cc_segment_props { struct_size: core::mem::size_of::<sys::cc_segment_props>(), ..Default::default() };
-        check(unsafe { sys::cc_world_get_segment_props(self.w.as_ptr(), id.0, &mut p) })?;
+        let mut p =
+            sys::cc_segment_props { struct_size: core::mem::size_of::<sys::cc_segment_props>(), ..Default::default() };
+        check(unsafe { sys::cc_world_get_segment_props(self.w.as_ptr(), id.0, &mut p) }, "World::segment_props")?;
         Ok(SegmentProps { restitution: p.restitution, category: p.category, mask: p.mask })
     }
 
@@ -638,21 +791,51 @@ impl<'cb> World<'cb> {
         };
         let code = unsafe { sys::cc_world_set_segment_props(self.w.as_ptr(), id.0, &p) };
         self.resume_panic();
-        check(code).map(drop)
+        if code < 0 {
+            return Err(cause::refused(code, "World::set_segment_props", [cause::restitution(props.restitution)]));
+        }
+        Ok(())
     }
 
     /// The first circle or wall that a circle of `radius` (finite, >= 0; 0 casts a ray) moving
     /// from `p` to `p + d` touches, the world held still at its current time: the earliest t in
-    /// [0, 1] at which it touches one while approaching. Only bodies whose category meets
-    /// `mask`; sensors are skipped. `Ok(None)` when it touches nothing; an overlap at `p` is a
+    /// [0, 1] at which it touches one while approaching. Only bodies the `filter` admits (a
+    /// [`QueryFilter`], or a `u32` mask): whose category meets its mask, not the circle it
+    /// ignores; sensors are skipped. `Ok(None)` when it touches nothing; an overlap at `p` is a
     /// hit of kind [`ContactKind::Overlap`] at t = 0. Equal times go to the lowest circle id,
-    /// then the lowest wall id. A cue ball's aiming line: the object ball moves off along
-    /// `normal`.
-    pub fn cast_circle(&self, p: Vec2, radius: f64, d: Vec2, mask: u32) -> Result<Option<CastHit>> {
+    /// then the lowest wall id. A cue ball's aiming line (ignoring the cue ball): the object
+    /// ball moves off along `normal`. The arguments come in Python's order, `(p, d, radius)`.
+    pub fn cast_circle(
+        &self,
+        p: impl Into<Vec2>,
+        d: impl Into<Vec2>,
+        radius: f64,
+        filter: impl Into<QueryFilter>,
+    ) -> Result<Option<CastHit>> {
+        let (p, d, f) = (p.into(), d.into(), filter.into().to_c());
         let mut out = sys::cc_cast_hit::default();
-        let code = check(unsafe {
-            sys::cc_world_cast_circle(self.w.as_ptr(), sys::cc_vec2 { x: p.x, y: p.y }, radius, sys::cc_vec2 { x: d.x, y: d.y }, mask, &mut out)
-        })?;
+        // SAFETY: the world is live, the filter and out are ours.
+        let code = unsafe {
+            sys::cc_world_cast_circle_filtered(
+                self.w.as_ptr(),
+                sys::cc_vec2 { x: p.x, y: p.y },
+                radius,
+                sys::cc_vec2 { x: d.x, y: d.y },
+                &f,
+                &mut out,
+            )
+        };
+        if code < 0 {
+            let finite = |name: &str, v: Vec2| {
+                (!(v.x.is_finite() && v.y.is_finite()))
+                    .then(|| format!("{name} must be finite, got ({}, {})", v.x, v.y))
+            };
+            return Err(cause::refused(
+                code,
+                "World::cast_circle",
+                [finite("p", p), finite("d", d), cause::nonneg_finite("radius", radius)],
+            ));
+        }
         let kind = match code {
             sys::CC_HIT => ContactKind::Hit,
             sys::CC_OVERLAP => ContactKind::Overlap,
@@ -660,7 +843,11 @@ impl<'cb> World<'cb> {
         };
         Ok(Some(CastHit {
             kind,
-            what: if out.circle >= 0 { Other::Circle(CircleId(out.circle)) } else { Other::Wall(SegmentId(out.segment)) },
+            what: if out.circle >= 0 {
+                Other::Circle(CircleId(out.circle))
+            } else {
+                Other::Wall(SegmentId(out.segment))
+            },
             t: out.t,
             point: Vec2::new(out.point.x, out.point.y),
             normal: Vec2::new(out.normal.x, out.normal.y),
@@ -669,36 +856,95 @@ impl<'cb> World<'cb> {
 
     /// The circles that overlap the disc of centre `c` and `radius` (>= 0, finite): their
     /// distance less than the sum of the radii (radius 0: the circles whose interior holds c),
-    /// whose category meets `mask`, sensors included. Writes the first `ids.len()` of them in
-    /// increasing id order into `ids` and returns how many there are (which may be more).
-    pub fn query_circle(&self, c: Vec2, radius: f64, mask: u32, ids: &mut [CircleId]) -> Result<usize> {
+    /// that the `filter` admits (category meets its mask, not the circle it ignores), sensors
+    /// included. Writes the first `ids.len()` of them in increasing id order into `ids` and
+    /// returns how many there are (which may be more).
+    pub fn query_circle(
+        &self,
+        c: impl Into<Vec2>,
+        radius: f64,
+        filter: impl Into<QueryFilter>,
+        ids: &mut [CircleId],
+    ) -> Result<usize> {
+        let (c, f) = (c.into(), filter.into().to_c());
         let cap = c_int::try_from(ids.len()).unwrap_or(c_int::MAX);
         // SAFETY: CircleId is repr(transparent) over i32 = c_int; the C side writes at most cap.
-        let n = unsafe { sys::cc_world_query_circle(self.w.as_ptr(), sys::cc_vec2 { x: c.x, y: c.y }, radius, mask, ids.as_mut_ptr().cast(), cap) };
-        check(n).map(|n| n as usize)
+        let n = unsafe {
+            sys::cc_world_query_circle_filtered(
+                self.w.as_ptr(),
+                sys::cc_vec2 { x: c.x, y: c.y },
+                radius,
+                &f,
+                ids.as_mut_ptr().cast(),
+                cap,
+            )
+        };
+        if n < 0 {
+            let centre =
+                (!(c.x.is_finite() && c.y.is_finite())).then(|| format!("c must be finite, got ({}, {})", c.x, c.y));
+            return Err(cause::refused(n, "World::query_circle", [centre, cause::nonneg_finite("radius", radius)]));
+        }
+        Ok(n as usize)
     }
 
     /// [`World::query_circle`] into a new `Vec` holding them all.
-    pub fn query_circle_vec(&self, c: Vec2, radius: f64, mask: u32) -> Result<Vec<CircleId>> {
-        collect_ids(|ids| self.query_circle(c, radius, mask, ids))
+    pub fn query_circle_vec(
+        &self,
+        c: impl Into<Vec2>,
+        radius: f64,
+        filter: impl Into<QueryFilter>,
+    ) -> Result<Vec<CircleId>> {
+        let (c, f) = (c.into(), filter.into());
+        collect_ids(|ids| self.query_circle(c, radius, f, ids))
     }
 
     /// The circles that meet the closed box [lo, hi] (the closed disc against the box, exactly:
-    /// a circle whose distance from the box equals its radius counts), whose category meets
-    /// `mask`, sensors included; lo <= hi in both coordinates, all finite. Written and counted
-    /// as by [`World::query_circle`].
-    pub fn query_box(&self, lo: Vec2, hi: Vec2, mask: u32, ids: &mut [CircleId]) -> Result<usize> {
+    /// a circle whose distance from the box equals its radius counts), that the `filter` admits,
+    /// sensors included; lo <= hi in both coordinates, all finite. Written and counted as by
+    /// [`World::query_circle`].
+    pub fn query_box(
+        &self,
+        lo: impl Into<Vec2>,
+        hi: impl Into<Vec2>,
+        filter: impl Into<QueryFilter>,
+        ids: &mut [CircleId],
+    ) -> Result<usize> {
+        let (lo, hi, f) = (lo.into(), hi.into(), filter.into().to_c());
         let cap = c_int::try_from(ids.len()).unwrap_or(c_int::MAX);
         // SAFETY: as in query_circle.
         let n = unsafe {
-            sys::cc_world_query_box(self.w.as_ptr(), sys::cc_vec2 { x: lo.x, y: lo.y }, sys::cc_vec2 { x: hi.x, y: hi.y }, mask, ids.as_mut_ptr().cast(), cap)
+            sys::cc_world_query_box_filtered(
+                self.w.as_ptr(),
+                sys::cc_vec2 { x: lo.x, y: lo.y },
+                sys::cc_vec2 { x: hi.x, y: hi.y },
+                &f,
+                ids.as_mut_ptr().cast(),
+                cap,
+            )
         };
-        check(n).map(|n| n as usize)
+        if n < 0 {
+            let finite = (!(lo.x.is_finite() && lo.y.is_finite() && hi.x.is_finite() && hi.y.is_finite()))
+                .then(|| format!("lo and hi must be finite, got ({}, {}) and ({}, {})", lo.x, lo.y, hi.x, hi.y));
+            let order = (!(lo.x <= hi.x && lo.y <= hi.y)).then(|| {
+                format!(
+                    "lo must be <= hi in both coordinates, got lo = ({}, {}), hi = ({}, {})",
+                    lo.x, lo.y, hi.x, hi.y
+                )
+            });
+            return Err(cause::refused(n, "World::query_box", [finite, order]));
+        }
+        Ok(n as usize)
     }
 
     /// [`World::query_box`] into a new `Vec` holding them all.
-    pub fn query_box_vec(&self, lo: Vec2, hi: Vec2, mask: u32) -> Result<Vec<CircleId>> {
-        collect_ids(|ids| self.query_box(lo, hi, mask, ids))
+    pub fn query_box_vec(
+        &self,
+        lo: impl Into<Vec2>,
+        hi: impl Into<Vec2>,
+        filter: impl Into<QueryFilter>,
+    ) -> Result<Vec<CircleId>> {
+        let (lo, hi, f) = (lo.into(), hi.into(), filter.into());
+        collect_ids(|ids| self.query_box(lo, hi, f, ids))
     }
 
     /// A 64-bit hash of the simulation state: the time, every live circle (id, state as
@@ -723,8 +969,8 @@ impl World<'_> {
     /// ```
     /// use circlecollide::*;
     /// let mut w = World::new(&WorldDef::default()).unwrap();
-    /// w.add_circle(&Circle::new(Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), 1.0)).unwrap();
-    /// w.add_circle(&Circle::new(Vec2::new(10.0, 0.0), Vec2::new(-1.0, 0.0), 1.0)).unwrap();
+    /// w.add_circle(&Circle::new(Vec2::new(0.0, 0.0), 1.0).with_vel(Vec2::new(1.0, 0.0))).unwrap();
+    /// w.add_circle(&Circle::new(Vec2::new(10.0, 0.0), 1.0).with_vel(Vec2::new(-1.0, 0.0))).unwrap();
     /// let mut c = w.try_clone().unwrap();
     /// w.step(10.0).unwrap();
     /// assert_ne!(c.hash(), w.hash()); // the copy did not move
@@ -733,7 +979,11 @@ impl World<'_> {
     /// ```
     pub fn try_clone(&self) -> Result<World<'static>> {
         if !self.slot.is_null() {
-            return Err(Error { code: sys::CC_ERR_INVALID });
+            return Err(Error::new(
+                sys::CC_ERR_INVALID,
+                "World::try_clone",
+                "a world made with callbacks cannot be cloned: its memory points at this world's closures",
+            ));
         }
         let memory = self._memory.clone();
         // the world starts at the buffer's start (cc_world_init returns its memory argument)
@@ -742,15 +992,45 @@ impl World<'_> {
             w: NonNull::dangling(),
             slot: core::ptr::null_mut(),
             capacity: self.capacity,
+            limits: self.limits,
             _memory: memory,
             _cb: PhantomData,
         };
         // SAFETY: offset is within the buffer (the same as in self's, of the same length), and the
         // new buffer is 16-byte aligned like the old one.
         let p = unsafe { world._memory.as_mut_ptr().cast::<u8>().add(offset) };
-        world.w = NonNull::new(p.cast()).ok_or(Error { code: sys::CC_ERR_MEMORY })?;
+        world.w = NonNull::new(p.cast()).ok_or_else(|| Error::from_code(sys::CC_ERR_MEMORY, "World::try_clone"))?;
         Ok(world)
     }
+}
+
+/// A def the library refused: named where the binding can tell why (its values against the
+/// header's rules), else the library's code.
+fn def_refusal(status: c_int, def: &WorldDef) -> Error {
+    const CALL: &str = "World::new";
+    let code = if status < 0 { status } else { sys::CC_ERR_INVALID };
+    let causes = [
+        cause::restitution(def.restitution),
+        cause::nonneg_finite("rest_speed", def.rest_speed),
+        cause::nonneg_finite("cell_size", def.cell_size),
+        cause::nonneg_finite("rolling_decel", def.rolling_decel),
+        (def.max_events == 0).then(|| "max_events must be >= 1, got 0".to_string()),
+        cause::nonneg_finite("period.x", def.period.x),
+        cause::nonneg_finite("period.y", def.period.y),
+    ];
+    if let Some(detail) = causes.into_iter().flatten().next() {
+        return Error::new(code, CALL, detail);
+    }
+    for (p, axis) in [(def.period.x, "x"), (def.period.y, "y")] {
+        if p > 0.0 && p <= def.cell_size {
+            return Error::new(
+                sys::CC_ERR_RANGE,
+                CALL,
+                format!("period.{axis} = {p} must be wider than cell_size = {}", def.cell_size),
+            );
+        }
+    }
+    Error::from_code(code, CALL)
 }
 
 /// Runs a query into a buffer, growing it to the count the query reports.

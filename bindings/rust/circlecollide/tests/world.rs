@@ -17,7 +17,7 @@ fn bounce_off_a_wall_with_a_borrowing_callback() {
     let mut events = Vec::new();
     {
         let mut w = World::with_callback(&def(2, 1), |e: &ContactEvent| events.push(*e)).unwrap();
-        let id = w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
+        let id = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
         let wall = w.add_segment(&Segment::new(v(5.0, -10.0), v(5.0, 10.0))).unwrap();
         assert_eq!(w.step(10.0).unwrap(), StepOutcome::Done);
         let c = w.circle(id).unwrap();
@@ -36,8 +36,8 @@ fn bounce_off_a_wall_with_a_borrowing_callback() {
 #[test]
 fn head_on_pair_swaps() {
     let mut w = World::new(&def(2, 0)).unwrap();
-    let a = w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
-    let b = w.add_circle(&Circle::new(v(10.0, 0.0), v(-1.0, 0.0), 1.0)).unwrap();
+    let a = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
+    let b = w.add_circle(&Circle::new(v(10.0, 0.0), 1.0).with_vel(v(-1.0, 0.0))).unwrap();
     let (m0, m1) = (w.circle(a).unwrap().mass, w.circle(b).unwrap().mass);
     w.step(6.0).unwrap(); // contact at t = 4, 2 more units apart: a at 2, b at 8
     let p = m0 * w.circle(a).unwrap().vel.x + m1 * w.circle(b).unwrap().vel.x;
@@ -51,22 +51,22 @@ fn head_on_pair_swaps() {
 #[test]
 fn errors() {
     let mut w = World::new(&def(1, 0)).unwrap();
-    let a = w.add_circle(&Circle::new(v(0.0, 0.0), v(0.0, 0.0), 1.0)).unwrap();
-    assert_eq!(w.add_circle(&Circle::new(v(5.0, 0.0), v(0.0, 0.0), 1.0)).unwrap_err().kind(), ErrorKind::Full);
+    let a = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0)).unwrap();
+    assert_eq!(w.add_circle(&Circle::new(v(5.0, 0.0), 1.0)).unwrap_err().kind(), ErrorKind::Full);
     assert_eq!(w.add_segment(&Segment::default()).unwrap_err().kind(), ErrorKind::Full);
     assert_eq!(w.step(-1.0).unwrap_err().kind(), ErrorKind::Invalid);
     assert_eq!(w.step(f64::NAN).unwrap_err().kind(), ErrorKind::Invalid);
     w.remove_circle(a).unwrap();
     assert_eq!(w.circle(a).unwrap_err().kind(), ErrorKind::NotFound);
-    assert!(w.circle(a).unwrap_err().to_string().starts_with("CC_ERR_NOT_FOUND"));
-    assert_eq!(w.add_circle(&Circle::new(v(0.0, 0.0), v(0.0, 0.0), -1.0)).unwrap_err().kind(), ErrorKind::Invalid);
+    assert!(w.circle(a).unwrap_err().to_string().starts_with("World::circle: CC_ERR_NOT_FOUND"));
+    assert_eq!(w.add_circle(&Circle::new(v(0.0, 0.0), -1.0)).unwrap_err().kind(), ErrorKind::Invalid);
     assert!(World::new(&WorldDef { restitution: 2.0, ..def(1, 0) }).is_err());
 }
 
 #[test]
 fn a_panic_in_the_callback_reaches_the_caller_after_the_step() {
     let mut w = World::with_callback(&def(1, 1), |_: &ContactEvent| panic!("from the callback")).unwrap();
-    w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
+    w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
     w.add_segment(&Segment::new(v(5.0, -10.0), v(5.0, 10.0))).unwrap();
     let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| w.step(10.0)));
     assert!(r.is_err());
@@ -85,9 +85,16 @@ fn exact_mode_in_a_box_conserves_energy() {
     }
     for i in 0..12 {
         let vel = v(((i * 7) % 5) as f64 - 2.0, ((i * 3) % 7) as f64 - 3.0);
-        w.add_circle(&Circle::new(v(4.0 * (i % 4) as f64, 4.0 * (i / 4) as f64), vel, 1.0).with_mass(1.0 + (i % 3) as f64)).unwrap();
+        w.add_circle(
+            &Circle::new(v(4.0 * (i % 4) as f64, 4.0 * (i / 4) as f64), 1.0)
+                .with_vel(vel)
+                .with_mass(1.0 + (i % 3) as f64),
+        )
+        .unwrap();
     }
-    let energy = |w: &World| w.circles().iter().map(|(_, c)| 0.5 * c.mass * (c.vel.x * c.vel.x + c.vel.y * c.vel.y)).sum::<f64>();
+    let energy = |w: &World| {
+        w.circles().iter().map(|(_, c)| 0.5 * c.mass * (c.vel.x * c.vel.x + c.vel.y * c.vel.y)).sum::<f64>()
+    };
     let before = energy(&w);
     w.step(20.0).unwrap();
     assert!(w.stats().collisions > 10, "{:?}", w.stats());
@@ -110,9 +117,11 @@ fn a_panic_in_the_callback_during_add_circle_reaches_the_caller_from_add_circle(
         }
     })
     .unwrap();
-    w.add_circle(&Circle::new(v(0.0, 0.0), v(0.0, 0.0), 1.0)).unwrap();
+    w.add_circle(&Circle::new(v(0.0, 0.0), 1.0)).unwrap();
     w.step(0.0).unwrap();
-    let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| w.add_circle(&Circle::new(v(1.5, 0.0), v(-1.0, 0.0), 1.0))));
+    let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+        w.add_circle(&Circle::new(v(1.5, 0.0), 1.0).with_vel(v(-1.0, 0.0)))
+    }));
     assert!(r.is_err(), "add_circle resumed the panic");
     assert_eq!(w.len(), 2, "the circle was added");
     // equal masses: the first now leaves at -1 towards a wall at x = -10, and the next step's

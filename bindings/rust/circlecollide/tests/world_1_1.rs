@@ -24,16 +24,19 @@ fn new_bodies_get_the_defs_properties_and_keep_what_is_set() {
     let d = WorldDef { restitution: 0.9, rolling_decel: 0.25, ..def(2, 1) };
     assert_eq!((d.restitution_mix, d.period), (RestitutionMix::Min, v(0.0, 0.0)), "the library's defaults");
     let mut w = World::new(&d).unwrap();
-    let a = w.add_circle(&Circle::new(v(0.0, 0.0), v(0.0, 0.0), 1.0)).unwrap();
+    let a = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0)).unwrap();
     let s = w.add_segment(&Segment::new(v(5.0, -1.0), v(5.0, 1.0))).unwrap();
     let p = w.circle_props(a).unwrap();
     assert_eq!(p, CircleProps { restitution: 0.9, rolling_decel: 0.25, category: 1, mask: u32::MAX, sensor: false });
     assert_eq!(w.segment_props(s).unwrap(), SegmentProps { restitution: 0.9, category: 1, mask: u32::MAX });
     // Default is what a default world gives
     let mut plain = World::new(&def(1, 1)).unwrap();
-    let c = plain.add_circle(&Circle::new(v(0.0, 0.0), v(0.0, 0.0), 1.0)).unwrap();
+    let c = plain.add_circle(&Circle::new(v(0.0, 0.0), 1.0)).unwrap();
     let t = plain.add_segment(&Segment::new(v(5.0, -1.0), v(5.0, 1.0))).unwrap();
-    assert_eq!((plain.circle_props(c).unwrap(), plain.segment_props(t).unwrap()), (CircleProps::default(), SegmentProps::default()));
+    assert_eq!(
+        (plain.circle_props(c).unwrap(), plain.segment_props(t).unwrap()),
+        (CircleProps::default(), SegmentProps::default())
+    );
 
     let q = CircleProps { restitution: 0.5, rolling_decel: 2.0, category: 6, mask: 0x0F0F, sensor: true };
     w.set_circle_props(a, &q).unwrap();
@@ -52,7 +55,10 @@ fn new_bodies_get_the_defs_properties_and_keep_what_is_set() {
         assert_eq!(w.set_circle_props(a, &bad).unwrap_err().kind(), ErrorKind::Invalid, "{bad:?}");
     }
     assert_eq!(w.circle_props(a).unwrap(), q);
-    assert_eq!(w.set_segment_props(s, &SegmentProps { restitution: -0.1, ..r }).unwrap_err().kind(), ErrorKind::Invalid);
+    assert_eq!(
+        w.set_segment_props(s, &SegmentProps { restitution: -0.1, ..r }).unwrap_err().kind(),
+        ErrorKind::Invalid
+    );
     assert_eq!(w.segment_props(s).unwrap(), r);
     assert_eq!(w.circle_props(CircleId(1)).unwrap_err().kind(), ErrorKind::NotFound);
     assert_eq!(w.set_circle_props(CircleId(7), &q).unwrap_err().kind(), ErrorKind::NotFound);
@@ -65,9 +71,14 @@ fn a_contacts_restitution_mixes_its_sides_and_the_wall_impulse_adds_up() {
     // radius 1 from x = 0 at speed 1 (mass 1) into a wall at x = 5: contact at t = 4. Circle
     // 0.8, wall 0.5: min 0.5, max 0.8, product 0.4, mean 0.65; it leaves at -e and, by t = 10,
     // is back at 4 - 6 e. The wall took the impulse m (1 + e) * 1.
-    for (mix, e) in [(RestitutionMix::Min, 0.5), (RestitutionMix::Max, 0.8), (RestitutionMix::Product, 0.4), (RestitutionMix::Mean, 0.65)] {
+    for (mix, e) in [
+        (RestitutionMix::Min, 0.5),
+        (RestitutionMix::Max, 0.8),
+        (RestitutionMix::Product, 0.4),
+        (RestitutionMix::Mean, 0.65),
+    ] {
         let mut w = World::new(&WorldDef { restitution_mix: mix, ..def(1, 1) }).unwrap();
-        let id = w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
+        let id = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
         let wall = w.add_segment(&Segment::new(v(5.0, -10.0), v(5.0, 10.0))).unwrap();
         w.set_circle_props(id, &CircleProps { restitution: 0.8, ..w.circle_props(id).unwrap() }).unwrap();
         w.set_segment_props(wall, &SegmentProps { restitution: 0.5, ..w.segment_props(wall).unwrap() }).unwrap();
@@ -85,8 +96,8 @@ fn the_virial_of_a_head_on_impact() {
     // equal masses 1 at speeds +-1, radii 1: contact at t = 4 with the centres 2 apart; the
     // elastic impulse is 2 (each velocity changes by 2): virial = 2 * 2 = 4
     let mut w = World::new(&def(2, 0)).unwrap();
-    w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
-    w.add_circle(&Circle::new(v(10.0, 0.0), v(-1.0, 0.0), 1.0)).unwrap();
+    w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
+    w.add_circle(&Circle::new(v(10.0, 0.0), 1.0).with_vel(v(-1.0, 0.0))).unwrap();
     w.step(6.0).unwrap();
     let s = w.stats();
     assert!(close(s.virial, 4.0) && s.wall_impulse == 0.0, "{s:?}");
@@ -98,8 +109,8 @@ fn filters_let_pairs_pass_through() {
     // swapped places untouched when b's category is not in a's mask; they bounce otherwise
     for (a_mask, collides) in [(!2u32, false), (2, true)] {
         let mut w = World::new(&def(2, 1)).unwrap();
-        let a = w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
-        let b = w.add_circle(&Circle::new(v(10.0, 0.0), v(-1.0, 0.0), 1.0)).unwrap();
+        let a = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
+        let b = w.add_circle(&Circle::new(v(10.0, 0.0), 1.0).with_vel(v(-1.0, 0.0))).unwrap();
         w.set_circle_props(b, &CircleProps { category: 2, ..Default::default() }).unwrap();
         w.set_circle_props(a, &CircleProps { mask: a_mask, ..Default::default() }).unwrap();
         w.step(10.0).unwrap();
@@ -114,7 +125,7 @@ fn filters_let_pairs_pass_through() {
     }
     // a wall of category 2 that the circle's mask (1) leaves out: the circle crosses x = 5
     let mut w = World::new(&def(1, 1)).unwrap();
-    let a = w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
+    let a = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
     let s = w.add_segment(&Segment::new(v(5.0, -10.0), v(5.0, 10.0))).unwrap();
     w.set_segment_props(s, &SegmentProps { category: 2, ..Default::default() }).unwrap();
     w.set_circle_props(a, &CircleProps { mask: 1, ..Default::default() }).unwrap();
@@ -129,8 +140,8 @@ fn rolling_circles_slow_to_rest() {
     // def.rolling_decel = 1: t_stop = 2; at t = 1: x = 2 (1 - 1/4) = 1.5, speed 1; at rest at 2.
     // Circle b with its own decel 4: t_stop = 0.5, at rest at x = 4 / 8 = 0.5 (from y = 10).
     let mut w = World::new(&WorldDef { rolling_decel: 1.0, ..def(2, 0) }).unwrap();
-    let a = w.add_circle(&Circle::new(v(0.0, 0.0), v(2.0, 0.0), 1.0)).unwrap();
-    let b = w.add_circle(&Circle::new(v(0.0, 10.0), v(2.0, 0.0), 1.0)).unwrap();
+    let a = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(2.0, 0.0))).unwrap();
+    let b = w.add_circle(&Circle::new(v(0.0, 10.0), 1.0).with_vel(v(2.0, 0.0))).unwrap();
     assert_eq!(w.circle_props(a).unwrap().rolling_decel, 1.0);
     w.step(0.0).unwrap(); // see set_rolling_decel_before_the_first_step below
     w.set_circle_props(b, &CircleProps { rolling_decel: 4.0, ..w.circle_props(b).unwrap() }).unwrap();
@@ -152,7 +163,7 @@ fn set_rolling_decel_before_the_first_step() {
     // speed 2, decel 4: t_stop = 0.5, at rest at x = 0.5
     for mode in [Mode::Exact, Mode::Swept, Mode::Discrete] {
         let mut w = World::new(&WorldDef { mode, ..def(1, 0) }).unwrap();
-        let a = w.add_circle(&Circle::new(v(0.0, 0.0), v(2.0, 0.0), 1.0)).unwrap();
+        let a = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(2.0, 0.0))).unwrap();
         w.set_circle_props(a, &CircleProps { rolling_decel: 4.0, ..Default::default() }).unwrap();
         for _ in 0..10 {
             w.step(0.1).unwrap();
@@ -168,8 +179,8 @@ fn set_rolling_decel_before_the_first_step() {
 /// rests at x = 5.2 (the contact at t = (2 - sqrt(3.36)) / 0.4).
 fn rolling_impact(mode: Mode, steps: usize) -> (Circle, Circle, u64) {
     let mut w = World::new(&WorldDef { mode, rolling_decel: 0.4, ..def(2, 0) }).unwrap();
-    let a = w.add_circle(&Circle::new(v(0.0, 0.0), v(2.0, 0.0), 0.1)).unwrap();
-    let b = w.add_circle(&Circle::new(v(1.0, 0.0), v(0.0, 0.0), 0.1)).unwrap();
+    let a = w.add_circle(&Circle::new(v(0.0, 0.0), 0.1).with_vel(v(2.0, 0.0))).unwrap();
+    let b = w.add_circle(&Circle::new(v(1.0, 0.0), 0.1)).unwrap();
     for _ in 0..steps {
         w.step(10.0 / steps as f64).unwrap();
     }
@@ -204,12 +215,14 @@ fn sensors_report_begin_and_end_at_their_times_in_order_with_contacts() {
         let mut w = World::with_callbacks(
             &def(2, 1),
             |e: &ContactEvent| log.borrow_mut().push(format!("contact {:?} t={}", e.other, e.t)),
-            |e: &SensorEvent| log.borrow_mut().push(format!("sensor {} {} begin={} t={}", e.sensor.0, e.visitor.0, e.begin, e.t)),
+            |e: &SensorEvent| {
+                log.borrow_mut().push(format!("sensor {} {} begin={} t={}", e.sensor.0, e.visitor.0, e.begin, e.t))
+            },
         )
         .unwrap();
-        let s = w.add_circle(&Circle::new(v(10.0, 0.0), v(0.0, 0.0), 2.0).immovable()).unwrap();
+        let s = w.add_circle(&Circle::new(v(10.0, 0.0), 2.0).immovable()).unwrap();
         w.set_circle_props(s, &CircleProps { sensor: true, ..Default::default() }).unwrap();
-        let ball = w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
+        let ball = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
         w.add_segment(&Segment::new(v(25.0, -10.0), v(25.0, 10.0))).unwrap();
         w.step(50.0).unwrap();
         let c = w.circle(ball).unwrap();
@@ -233,22 +246,25 @@ fn sensor_events_from_props_filters_and_the_limit() {
     let mut events = Vec::new();
     {
         let mut w = World::with_sensor_callback(&def(MAX_SENSORS + 2, 0), |e: &SensorEvent| events.push(*e)).unwrap();
-        let ball = w.add_circle(&Circle::new(v(0.0, 0.0), v(0.0, 0.0), 1.0)).unwrap();
+        let ball = w.add_circle(&Circle::new(v(0.0, 0.0), 1.0)).unwrap();
         // a sensor (made one far away) set onto the ball: begin at once, at t = 0; the ball's
         // mask then leaving the sensor's category out: end at once; back in: begin again
-        let s = w.add_circle(&Circle::new(v(1.0, 50.0), v(0.0, 0.0), 1.0).immovable()).unwrap();
+        let s = w.add_circle(&Circle::new(v(1.0, 50.0), 1.0).immovable()).unwrap();
         w.set_circle_props(s, &CircleProps { sensor: true, category: 4, ..Default::default() }).unwrap();
         w.step(0.0).unwrap(); // before the first step, all of this would wait for it
-        w.set_circle(s, &Circle::new(v(1.0, 0.0), v(0.0, 0.0), 1.0).immovable()).unwrap();
+        w.set_circle(s, &Circle::new(v(1.0, 0.0), 1.0).immovable()).unwrap();
         w.set_circle_props(ball, &CircleProps { mask: !4, ..Default::default() }).unwrap();
         w.set_circle_props(ball, &CircleProps::default()).unwrap();
         // sensors do not sense sensors; the 65th sensor is one too many
         for i in 1..MAX_SENSORS {
-            let id = w.add_circle(&Circle::new(v(100.0 + 3.0 * i as f64, 0.0), v(0.0, 0.0), 1.0).immovable()).unwrap();
+            let id = w.add_circle(&Circle::new(v(100.0 + 3.0 * i as f64, 0.0), 1.0).immovable()).unwrap();
             w.set_circle_props(id, &CircleProps { sensor: true, ..Default::default() }).unwrap();
         }
-        let extra = w.add_circle(&Circle::new(v(-100.0, 0.0), v(0.0, 0.0), 1.0).immovable()).unwrap();
-        assert_eq!(w.set_circle_props(extra, &CircleProps { sensor: true, ..Default::default() }).unwrap_err().kind(), ErrorKind::Full);
+        let extra = w.add_circle(&Circle::new(v(-100.0, 0.0), 1.0).immovable()).unwrap();
+        assert_eq!(
+            w.set_circle_props(extra, &CircleProps { sensor: true, ..Default::default() }).unwrap_err().kind(),
+            ErrorKind::Full
+        );
         assert!(!w.circle_props(extra).unwrap().sensor);
     }
     let got: Vec<_> = events.iter().map(|e| (e.sensor.0, e.visitor.0, e.begin, e.t)).collect();
@@ -258,17 +274,17 @@ fn sensor_events_from_props_filters_and_the_limit() {
 #[test]
 fn a_panic_in_the_sensor_callback_reaches_the_caller_after_the_call() {
     let mut w = World::with_sensor_callback(&def(3, 0), |_: &SensorEvent| panic!("from the sensor callback")).unwrap();
-    let s = w.add_circle(&Circle::new(v(10.0, 0.0), v(0.0, 0.0), 2.0).immovable()).unwrap();
+    let s = w.add_circle(&Circle::new(v(10.0, 0.0), 2.0).immovable()).unwrap();
     w.set_circle_props(s, &CircleProps { sensor: true, ..Default::default() }).unwrap();
-    w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
+    w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
     let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| w.step(20.0)));
     assert!(r.is_err());
     assert!(close(w.time(), 20.0), "the C step completed");
     w.step(1.0).unwrap(); // nothing pending any more
-    // and from set_circle_props: a ball put into the sensor by a filter change
-    let b = w.add_circle(&Circle::new(v(10.0, 5.0), v(0.0, 0.0), 1.0)).unwrap();
+                          // and from set_circle_props: a ball put into the sensor by a filter change
+    let b = w.add_circle(&Circle::new(v(10.0, 5.0), 1.0)).unwrap();
     w.set_circle_props(b, &CircleProps { mask: 0, ..Default::default() }).unwrap();
-    w.set_circle(b, &Circle::new(v(10.0, 0.0), v(0.0, 0.0), 1.0)).unwrap(); // filtered: no event
+    w.set_circle(b, &Circle::new(v(10.0, 0.0), 1.0)).unwrap(); // filtered: no event
     let r = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| w.set_circle_props(b, &CircleProps::default())));
     assert!(r.is_err());
     assert!(w.circle_props(b).unwrap().mask == u32::MAX, "the change was made");
@@ -278,9 +294,9 @@ fn cast_scene() -> World<'static> {
     // circles 0 at (10, 0) and 1 at (20, 0), radius 1; a sensor 2 at (5, 0) radius 1 (skipped by
     // casts); a wall 0 at x = 30
     let mut w = World::new(&def(3, 1)).unwrap();
-    w.add_circle(&Circle::new(v(10.0, 0.0), v(0.0, 0.0), 1.0)).unwrap();
-    w.add_circle(&Circle::new(v(20.0, 0.0), v(0.0, 0.0), 1.0)).unwrap();
-    let s = w.add_circle(&Circle::new(v(5.0, 0.0), v(0.0, 0.0), 1.0).immovable()).unwrap();
+    w.add_circle(&Circle::new(v(10.0, 0.0), 1.0)).unwrap();
+    w.add_circle(&Circle::new(v(20.0, 0.0), 1.0)).unwrap();
+    let s = w.add_circle(&Circle::new(v(5.0, 0.0), 1.0).immovable()).unwrap();
     w.set_circle_props(s, &CircleProps { sensor: true, ..Default::default() }).unwrap();
     w.add_segment(&Segment::new(v(30.0, -10.0), v(30.0, 10.0))).unwrap();
     w.step(0.0).unwrap();
@@ -292,32 +308,38 @@ fn casts_hit_what_the_geometry_says() {
     let mut w = cast_scene();
     // radius 0.5 from the origin along (34, 0): touches circle 0 (radius sum 1.5) with its
     // centre at x = 8.5, t = 8.5 / 34 = 0.25; contact point (9, 0), normal +x
-    let h = w.cast_circle(v(0.0, 0.0), 0.5, v(34.0, 0.0), u32::MAX).unwrap().unwrap();
+    let h = w.cast_circle(v(0.0, 0.0), v(34.0, 0.0), 0.5, u32::MAX).unwrap().unwrap();
     assert_eq!((h.kind, h.what), (ContactKind::Hit, Other::Circle(CircleId(0))));
     assert!(close(h.t, 0.25) && close(h.point.x, 9.0) && h.point.y.abs() < 1e-12, "{h:?}");
     assert!(close(h.normal.x, 1.0) && h.normal.y.abs() < 1e-12, "{h:?}");
     // a ray at y = 0.6 along (46, 0): enters circle 0 at x = 10 - sqrt(1 - 0.36) = 9.2, t = 0.2,
     // the normal from the hit point towards the centre (0.8, -0.6)
-    let h = w.cast_circle(v(0.0, 0.6), 0.0, v(46.0, 0.0), u32::MAX).unwrap().unwrap();
+    let h = w.cast_circle(v(0.0, 0.6), v(46.0, 0.0), 0.0, u32::MAX).unwrap().unwrap();
     assert_eq!(h.what, Other::Circle(CircleId(0)));
     assert!(close(h.t, 0.2) && close(h.point.x, 9.2) && close(h.point.y, 0.6), "{h:?}");
     assert!(close(h.normal.x, 0.8) && close(h.normal.y, -0.6), "{h:?}");
     // circle 0 moved to category 2, cast with mask 1: it passes to circle 1, centre at 18.5
     w.set_circle_props(CircleId(0), &CircleProps { category: 2, ..Default::default() }).unwrap();
-    let h = w.cast_circle(v(0.0, 0.0), 0.5, v(37.0, 0.0), 1).unwrap().unwrap();
+    let h = w.cast_circle(v(0.0, 0.0), v(37.0, 0.0), 0.5, 1).unwrap().unwrap();
     assert!(h.what == Other::Circle(CircleId(1)) && close(h.t, 0.5), "{h:?}");
     // radius 1 from (25, 0) along (10, 0): the wall at x = 30 with the centre at 29, t = 0.4
-    let h = w.cast_circle(v(25.0, 0.0), 1.0, v(10.0, 0.0), u32::MAX).unwrap().unwrap();
-    assert!(h.what == Other::Wall(SegmentId(0)) && close(h.t, 0.4) && close(h.point.x, 30.0) && close(h.normal.x, 1.0), "{h:?}");
+    let h = w.cast_circle(v(25.0, 0.0), v(10.0, 0.0), 1.0, u32::MAX).unwrap().unwrap();
+    assert!(
+        h.what == Other::Wall(SegmentId(0)) && close(h.t, 0.4) && close(h.point.x, 30.0) && close(h.normal.x, 1.0),
+        "{h:?}"
+    );
     // along -x from (25, 0) a length 3 reaches x = 22 only: circle 1's edge at 21 + 0.5 is out
     // of reach; a path through the sensor alone (from (5, 3) down to (5, -3)) touches nothing
-    assert_eq!(w.cast_circle(v(25.0, 0.0), 0.5, v(-3.0, 0.0), u32::MAX).unwrap(), None);
-    assert_eq!(w.cast_circle(v(5.0, 3.0), 0.1, v(0.0, -6.0), u32::MAX).unwrap(), None);
+    assert_eq!(w.cast_circle(v(25.0, 0.0), v(-3.0, 0.0), 0.5, u32::MAX).unwrap(), None);
+    assert_eq!(w.cast_circle(v(5.0, 3.0), v(0.0, -6.0), 0.1, u32::MAX).unwrap(), None);
     // starting inside circle 1: an overlap at t = 0, normal from p towards its centre
-    let h = w.cast_circle(v(19.5, 0.0), 0.25, v(1.0, 0.0), u32::MAX).unwrap().unwrap();
-    assert!(h.kind == ContactKind::Overlap && h.what == Other::Circle(CircleId(1)) && h.t == 0.0 && close(h.normal.x, 1.0), "{h:?}");
-    assert_eq!(w.cast_circle(v(0.0, 0.0), -1.0, v(1.0, 0.0), u32::MAX).unwrap_err().kind(), ErrorKind::Invalid);
-    assert_eq!(w.cast_circle(v(f64::NAN, 0.0), 1.0, v(1.0, 0.0), u32::MAX).unwrap_err().kind(), ErrorKind::Invalid);
+    let h = w.cast_circle(v(19.5, 0.0), v(1.0, 0.0), 0.25, u32::MAX).unwrap().unwrap();
+    assert!(
+        h.kind == ContactKind::Overlap && h.what == Other::Circle(CircleId(1)) && h.t == 0.0 && close(h.normal.x, 1.0),
+        "{h:?}"
+    );
+    assert_eq!(w.cast_circle(v(0.0, 0.0), v(1.0, 0.0), -1.0, u32::MAX).unwrap_err().kind(), ErrorKind::Invalid);
+    assert_eq!(w.cast_circle(v(f64::NAN, 0.0), v(1.0, 0.0), 1.0, u32::MAX).unwrap_err().kind(), ErrorKind::Invalid);
 }
 
 #[test]
@@ -325,7 +347,7 @@ fn queries_return_the_ids_the_geometry_says() {
     // 0 at (0, 0) r 1, 1 at (5, 0) r 1, 2 at (10, 0) r 1, 3 at (0, 5) r 0.5 (category 2)
     let mut w = World::new(&def(4, 0)).unwrap();
     for (x, y, r) in [(0.0, 0.0, 1.0), (5.0, 0.0, 1.0), (10.0, 0.0, 1.0), (0.0, 5.0, 0.5)] {
-        w.add_circle(&Circle::new(v(x, y), v(0.0, 0.0), r)).unwrap();
+        w.add_circle(&Circle::new(v(x, y), r)).unwrap();
     }
     w.set_circle_props(CircleId(3), &CircleProps { category: 2, ..Default::default() }).unwrap();
     w.step(0.0).unwrap();
@@ -359,11 +381,17 @@ fn query_vecs_grow_past_their_first_buffer() {
     // those at x = 10..58 (ids 5..=29); ids 4 and 30 are 2 away (> 0.5): not them
     let mut w = World::new(&def(50, 0)).unwrap();
     for i in 0..50 {
-        w.add_circle(&Circle::new(v(2.0 * i as f64, 0.0), v(0.0, 0.0), 0.5)).unwrap();
+        w.add_circle(&Circle::new(v(2.0 * i as f64, 0.0), 0.5)).unwrap();
     }
     w.step(0.0).unwrap();
-    assert_eq!(w.query_box_vec(v(10.0, -1.0), v(58.0, 1.0), u32::MAX).unwrap(), (5..=29).map(CircleId).collect::<Vec<_>>());
-    assert_eq!(w.query_box_vec(v(-10.0, -1.0), v(200.0, 1.0), u32::MAX).unwrap(), (0..50).map(CircleId).collect::<Vec<_>>());
+    assert_eq!(
+        w.query_box_vec(v(10.0, -1.0), v(58.0, 1.0), u32::MAX).unwrap(),
+        (5..=29).map(CircleId).collect::<Vec<_>>()
+    );
+    assert_eq!(
+        w.query_box_vec(v(-10.0, -1.0), v(200.0, 1.0), u32::MAX).unwrap(),
+        (0..50).map(CircleId).collect::<Vec<_>>()
+    );
 }
 
 fn gas(vx0: f64) -> World<'static> {
@@ -375,7 +403,7 @@ fn gas(vx0: f64) -> World<'static> {
     }
     for i in 0..12 {
         let vel = if i == 0 { v(vx0, 1.0) } else { v(((i * 7) % 5) as f64 - 2.0, ((i * 3) % 7) as f64 - 3.0) };
-        w.add_circle(&Circle::new(v(4.0 * (i % 4) as f64, 4.0 * (i / 4) as f64), vel, 1.0)).unwrap();
+        w.add_circle(&Circle::new(v(4.0 * (i % 4) as f64, 4.0 * (i / 4) as f64), 1.0).with_vel(vel)).unwrap();
     }
     w
 }
@@ -412,9 +440,9 @@ fn periodic_boxes_wrap_positions_and_unwrapped_does_not() {
     let d = WorldDef { period: v(10.0, 0.0), ..def(3, 0) };
     assert_eq!(d.period, v(10.0, 0.0));
     let mut w = World::new(&d).unwrap();
-    let a = w.add_circle(&Circle::new(v(9.0, 0.0), v(2.0, 0.0), 0.5)).unwrap();
-    let b = w.add_circle(&Circle::new(v(1.5, 5.0), v(-1.0, 0.0), 0.5)).unwrap();
-    let c = w.add_circle(&Circle::new(v(8.5, 5.0), v(1.0, 0.0), 0.5)).unwrap();
+    let a = w.add_circle(&Circle::new(v(9.0, 0.0), 0.5).with_vel(v(2.0, 0.0))).unwrap();
+    let b = w.add_circle(&Circle::new(v(1.5, 5.0), 0.5).with_vel(v(-1.0, 0.0))).unwrap();
+    let c = w.add_circle(&Circle::new(v(8.5, 5.0), 0.5).with_vel(v(1.0, 0.0))).unwrap();
     w.step(1.5).unwrap();
     let ca = w.circle(a).unwrap();
     assert!(close(ca.pos.x, 2.0) && ca.pos.y == 0.0, "{ca:?}");
@@ -427,10 +455,10 @@ fn periodic_boxes_wrap_positions_and_unwrapped_does_not() {
     assert_eq!(w.unwrapped(CircleId(3)).unwrap_err().kind(), ErrorKind::NotFound);
     // a period too small for the circles (< 2 diameters + a cell) refuses them
     let mut small = World::new(&WorldDef { period: v(3.0, 3.0), ..def(1, 0) }).unwrap();
-    assert_eq!(small.add_circle(&Circle::new(v(1.0, 1.0), v(0.0, 0.0), 1.0)).unwrap_err().kind(), ErrorKind::Invalid);
+    assert_eq!(small.add_circle(&Circle::new(v(1.0, 1.0), 1.0)).unwrap_err().kind(), ErrorKind::Range);
     // open axes: unwrapped is the position
     let mut open = World::new(&def(1, 0)).unwrap();
-    let o = open.add_circle(&Circle::new(v(-3.0, 4.0), v(1.0, 0.0), 1.0)).unwrap();
+    let o = open.add_circle(&Circle::new(v(-3.0, 4.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
     open.step(2.0).unwrap();
     assert_eq!(open.unwrapped(o).unwrap(), open.circle(o).unwrap().pos);
 }
@@ -442,10 +470,13 @@ fn sensors_in_swept_and_discrete_report_at_the_end_of_the_step() {
     for mode in [Mode::Swept, Mode::Discrete] {
         let mut events = Vec::new();
         {
-            let mut w = World::with_sensor_callback(&WorldDef { mode, ..def(2, 0) }, |e: &SensorEvent| events.push((e.begin, e.t))).unwrap();
-            let s = w.add_circle(&Circle::new(v(10.0, 0.0), v(0.0, 0.0), 2.0).immovable()).unwrap();
+            let mut w = World::with_sensor_callback(&WorldDef { mode, ..def(2, 0) }, |e: &SensorEvent| {
+                events.push((e.begin, e.t))
+            })
+            .unwrap();
+            let s = w.add_circle(&Circle::new(v(10.0, 0.0), 2.0).immovable()).unwrap();
             w.set_circle_props(s, &CircleProps { sensor: true, ..Default::default() }).unwrap();
-            w.add_circle(&Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0)).unwrap();
+            w.add_circle(&Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
             for _ in 0..5 {
                 w.step(4.0).unwrap();
             }
@@ -461,11 +492,11 @@ fn queries_and_casts_see_across_the_period() {
     // (> 0.5): not. A circle of radius 0.5 cast from (7, 5) along (4, 0) touches the image with
     // its centre at 9.5: t = 2.5 / 4 = 0.625.
     let mut w = World::new(&WorldDef { period: v(10.0, 10.0), ..def(1, 0) }).unwrap();
-    let a = w.add_circle(&Circle::new(v(0.5, 5.0), v(0.0, 0.0), 0.5)).unwrap();
+    let a = w.add_circle(&Circle::new(v(0.5, 5.0), 0.5)).unwrap();
     w.step(0.0).unwrap();
     assert_eq!(w.query_circle_vec(v(9.8, 5.0), 0.5, u32::MAX).unwrap(), [a]);
     assert_eq!(w.query_box_vec(v(9.0, 4.0), v(9.9, 6.0), u32::MAX).unwrap(), []);
-    let h = w.cast_circle(v(7.0, 5.0), 0.5, v(4.0, 0.0), u32::MAX).unwrap().unwrap();
+    let h = w.cast_circle(v(7.0, 5.0), v(4.0, 0.0), 0.5, u32::MAX).unwrap().unwrap();
     assert!(h.what == Other::Circle(a) && close(h.t, 0.625) && close(h.normal.x, 1.0), "{h:?}");
 }
 
@@ -474,13 +505,18 @@ fn a_clone_steps_bit_for_bit_like_the_original() {
     for mode in [Mode::Exact, Mode::Swept, Mode::Discrete] {
         let d = WorldDef { mode, restitution: 0.9, rolling_decel: 0.05, ..def(40, 4) };
         let mut w = World::new(&d).unwrap();
-        for (p, q) in [((0.0, 0.0), (20.0, 0.0)), ((20.0, 0.0), (20.0, 20.0)), ((20.0, 20.0), (0.0, 20.0)), ((0.0, 20.0), (0.0, 0.0))] {
+        for (p, q) in [
+            ((0.0, 0.0), (20.0, 0.0)),
+            ((20.0, 0.0), (20.0, 20.0)),
+            ((20.0, 20.0), (0.0, 20.0)),
+            ((0.0, 20.0), (0.0, 0.0)),
+        ] {
             w.add_segment(&Segment::new(v(p.0, p.1), v(q.0, q.1))).unwrap();
         }
         for i in 0..36 {
             let (x, y) = (1.5 + (i % 6) as f64 * 3.0, 1.5 + (i / 6) as f64 * 3.0);
             let vel = v(((i * 7919) % 13) as f64 - 6.0, ((i * 104729) % 11) as f64 - 5.0);
-            w.add_circle(&Circle::new(v(x, y), vel, 0.6 + 0.02 * i as f64)).unwrap();
+            w.add_circle(&Circle::new(v(x, y), 0.6 + 0.02 * i as f64).with_vel(vel)).unwrap();
         }
         w.step(0.7).unwrap(); // mid-flight: events predicted and queued
         let mut c = w.try_clone().unwrap();
