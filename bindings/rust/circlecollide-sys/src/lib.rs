@@ -352,8 +352,15 @@ extern "C" {
     pub fn cc_world_hash(w: *const cc_world) -> u64;
 
     // 1.2
-    pub fn cc_world_add_circles(w: *mut cc_world, c: *const cc_circle, n: c_int, ids_out: *mut c_int, failed: *mut c_int) -> c_int;
-    pub fn cc_world_get_unwrapped_all(w: *const cc_world, ids: *mut c_int, out: *mut cc_vec2, capacity: c_int) -> c_int;
+    pub fn cc_world_add_circles(
+        w: *mut cc_world,
+        c: *const cc_circle,
+        n: c_int,
+        ids_out: *mut c_int,
+        failed: *mut c_int,
+    ) -> c_int;
+    pub fn cc_world_get_unwrapped_all(w: *const cc_world, ids: *mut c_int, out: *mut cc_vec2, capacity: c_int)
+        -> c_int;
     pub fn cc_world_cast_circle_filtered(
         w: *const cc_world,
         p: cc_vec2,

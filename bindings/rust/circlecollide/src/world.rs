@@ -593,7 +593,10 @@ impl<'cb> World<'cb> {
     /// with no index). In EXACT an added circle that overlaps another may fire the contact
     /// callback, as `add_circle`'s does.
     pub fn add_circles(&mut self, circles: &[Circle]) -> core::result::Result<Vec<CircleId>, BatchError> {
-        let n = c_int::try_from(circles.len()).map_err(|_| BatchError { error: Error::new(sys::CC_ERR_INVALID, "World::add_circles", "more circles than a C int counts"), index: None })?;
+        let n = c_int::try_from(circles.len()).map_err(|_| BatchError {
+            error: Error::new(sys::CC_ERR_INVALID, "World::add_circles", "more circles than a C int counts"),
+            index: None,
+        })?;
         let mut ids = vec![0 as c_int; circles.len()];
         let mut failed: c_int = -1;
         let code = unsafe {
@@ -666,7 +669,9 @@ impl<'cb> World<'cb> {
         let cap = self.capacity.max(1);
         let mut ids = vec![0 as c_int; cap];
         let mut out = vec![sys::cc_vec2::default(); cap];
-        let n = unsafe { sys::cc_world_get_unwrapped_all(self.w.as_ptr(), ids.as_mut_ptr(), out.as_mut_ptr(), cap as c_int) };
+        let n = unsafe {
+            sys::cc_world_get_unwrapped_all(self.w.as_ptr(), ids.as_mut_ptr(), out.as_mut_ptr(), cap as c_int)
+        };
         let n = (n.max(0) as usize).min(cap);
         ids.into_iter().zip(out).take(n).map(|(i, p)| (CircleId(i), Vec2::new(p.x, p.y))).collect()
     }

@@ -544,10 +544,11 @@ fn add_circles_is_one_add_per_circle_or_nothing() {
     // three circles into a world of room 4 that holds one: ids 1, 2, 3, as three add_circle give
     let mut w = World::new(&def(4, 0)).unwrap();
     let mut singles = World::new(&def(4, 0)).unwrap();
-    let first = Circle::new(v(0.0, 0.0), v(1.0, 0.0), 1.0);
+    let first = Circle::new(v(0.0, 0.0), 1.0).with_vel(v(1.0, 0.0));
     w.add_circle(&first).unwrap();
     singles.add_circle(&first).unwrap();
-    let batch: Vec<Circle> = (0..3).map(|i| Circle::new(v(5.0 * (i + 1) as f64, 0.0), v(-1.0, 0.5), 1.0)).collect();
+    let batch: Vec<Circle> =
+        (0..3).map(|i| Circle::new(v(5.0 * (i + 1) as f64, 0.0), 1.0).with_vel(v(-1.0, 0.5))).collect();
     let ids = w.add_circles(&batch).unwrap();
     assert_eq!(ids, vec![CircleId(1), CircleId(2), CircleId(3)]);
     for c in &batch {
@@ -572,8 +573,8 @@ fn add_circles_is_one_add_per_circle_or_nothing() {
 fn unwrapped_all_is_unwrapped_for_each() {
     // a circle at x = 9 moving at speed 1 in a period of 10: at t = 2.5 it is at 1.5, unwrapped 11.5
     let mut w = World::new(&WorldDef { period: v(10.0, 10.0), ..def(4, 0) }).unwrap();
-    let a = w.add_circle(&Circle::new(v(9.0, 5.0), v(1.0, 0.0), 1.0)).unwrap();
-    let b = w.add_circle(&Circle::new(v(2.0, 1.0), v(0.0, -1.0), 1.0)).unwrap();
+    let a = w.add_circle(&Circle::new(v(9.0, 5.0), 1.0).with_vel(v(1.0, 0.0))).unwrap();
+    let b = w.add_circle(&Circle::new(v(2.0, 1.0), 1.0).with_vel(v(0.0, -1.0))).unwrap();
     w.step(2.5).unwrap();
     let all = w.unwrapped_all();
     assert_eq!(all.len(), 2);
