@@ -2,6 +2,7 @@
 cc_world_add_circles) against a loop of World.add_circle, for N circles into an empty world.
 
 Usage: python bench/python_bulk.py [--sizes 10000,1000000] [--rounds 5] [--quick]
+(--rounds for N > 1e5; smaller N get three times as many)
 
 Run it with CIRCLECOLLIDE_LIBRARY set to the shared library of the benchmark build and the
 binding on PYTHONPATH (bench/run.sh does, as for bench/python_path.py). The circles: radius 0.5
@@ -50,6 +51,7 @@ def main() -> int:
                                                     "add_circles us", "[min, max]", "loop / add_circles [min, max]",
                                                     "of minima"))
     for n in sizes:
+        rounds_n = rounds if n > 100000 else 3 * rounds
         pos, vel = lattice(n, 7)
         radius = np.full(n, 0.5)
         mass = np.ones(n)
@@ -57,7 +59,7 @@ def main() -> int:
                    for p, v in zip(pos, vel)]
         t = {"loop": [], "batch": []}
         hashes = {}
-        for r in range(rounds):
+        for r in range(rounds_n):
             for row in (["loop", "batch"] if r % 2 == 0 else ["batch", "loop"]):
                 w = cc.World(max_circles=n)
                 t0 = time.perf_counter()
@@ -74,7 +76,7 @@ def main() -> int:
         same = hashes["loop"] == hashes["batch"] and len(hashes["loop"]) == 1
         med = statistics.median
         print("%9d %7d %20.3f %26s %20.4f %26s %28s %10.1f%s" % (
-            n, rounds, med(t["loop"]), "[%.3f, %.3f]" % (min(t["loop"]), max(t["loop"])), med(t["batch"]),
+            n, rounds_n, med(t["loop"]), "[%.3f, %.3f]" % (min(t["loop"]), max(t["loop"])), med(t["batch"]),
             "[%.4f, %.4f]" % (min(t["batch"]), max(t["batch"])),
             "%.1f [%.1f, %.1f]" % (med(ratio), min(ratio), max(ratio)), min(t["loop"]) / min(t["batch"]),
             "" if same else "  (the worlds differ!)"))

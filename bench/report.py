@@ -14,10 +14,16 @@ import os
 import re
 import sys
 
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+
+def pyplot():
+    # imported only where a plot is drawn: --splice needs no matplotlib
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
 
 
 def rows(path):
@@ -58,6 +64,7 @@ def peers_table(text):
 
 
 def pareto_plot(matrix, path):
+    plt = pyplot()
     scenes = list(dict.fromkeys(r["scene"] for r in matrix))
     cols = 3
     rows_n = (len(scenes) + cols - 1) // cols
@@ -89,6 +96,7 @@ def pareto_plot(matrix, path):
 
 
 def scaling_plot(scaling, path):
+    plt = pyplot()
     ns = [float(r["n"]) for r in scaling]
     cost = [float(r["cost_ns"]) for r in scaling]
     fig, ax = plt.subplots(figsize=(5, 3.6))
@@ -111,20 +119,21 @@ SECTION_12 = "## 10. The 1.2 calls: the batch add and the query filter"
 def section_12(res, w, command=None):
     """Section 10 from bulk.txt, filter.txt and python_bulk.txt (bench_bulk add, bench_queries
     filter, bench/python_bulk.py); with command, the separate run it came from is named."""
-    bulk, filt, pyb = (read(os.path.join(res, n)) for n in ("bulk.txt", "filter.txt", "python_bulk.txt"))
+    bulk, filt, pyb, absent = (read(os.path.join(res, n)) for n in ("bulk.txt", "filter.txt", "python_bulk.txt",
+                                                                     "filter_absent.txt"))
     if not (bulk or filt or pyb):
         return
 
     def block(text):
         w("```")
-        w("\n".join(l for l in text.strip().splitlines() if not l.startswith("figure ")))
+        w("\n".join(l for l in text.strip("\n").splitlines() if not l.startswith("figure ")))
         w("```")
         w("")
     w(SECTION_12)
     w("")
     machine = read(os.path.join(res, "bulk_machine.txt")).strip().splitlines()
     if command and machine:
-        w("Measured apart from the sections above (`%s`), in one run: %s." % (command, "; ".join(machine)))
+        w("Measured apart from the sections above (`%s`), in one session: %s." % (command, "; ".join(machine)))
         w("")
     if bulk:
         w("`bench_bulk add`: N circles (the gas of section 4 at area fraction 0.3, EXACT, its four walls) "
@@ -132,14 +141,17 @@ def section_12(res, w, command=None):
           "each into fresh memory touched before the clock starts, the two alternating which goes first; "
           "ns per circle, medians over rounds [spread], the ratio per round. Both end with the same "
           "`cc_world_hash`. The batch checks every circle before it adds any (the header's Batches), so "
-          "it reads its input twice: in C it saves nothing, it costs that second pass.")
+          "it reads its input twice: in C it is no faster than the single adds (it pays for that second "
+          "pass); what it saves is a binding's crossing of its FFI for every circle (below).")
         w("")
         block(bulk)
     if pyb:
         w("`bench/python_bulk.py`: the same from Python, `World.add_circles(pos, vel, radius, mass)` from "
           "numpy arrays (one C call per chunk) against a loop of `World.add_circle` over `Circle` values "
           "made before the clock starts (the loop's floor), us per circle; the ratio per round, and of "
-          "the minima. Both end with the same `World.hash`.")
+          "the minima. Both end with the same `World.hash`. Unlike the C rows, a `World`'s memory (numpy "
+          "zeros: pages mapped at their first write) is first written by the adds, in both rows: at "
+          "N = 1e6 that is part of what `add_circles` costs, as it is for a user.")
         w("")
         block(pyb)
     if filt:
@@ -153,6 +165,13 @@ def section_12(res, w, command=None):
           "`_filtered` ones with {mask, -1}, so a program that sets no filter pays nothing for it.")
         w("")
         block(filt)
+    if absent:
+        w("`bench/filter_absent.sh` (by hand: it needs a build from before the filter): the 1.1 calls "
+          "(`bench_queries casts --quick`, the same points) of main before the filter's merge (73eb23c) "
+          "against this build's, the two programs alternating, the ratio per round: what the filter "
+          "costs a program that sets none.")
+        w("")
+        block(absent)
 
 
 def how_to(w):
@@ -165,6 +184,7 @@ def how_to(w):
     w("build-bench/bench/bench_pair_rolling dump|time; bench/pooltool_rolling.py (section 8)")
     w("build-bench/bench/bench_queries casts|walls|filter")
     w("build-bench/bench/bench_bulk add [--quick]   # section 10, the batch add")
+    w("bench/filter_absent.sh OLD/bench/bench_queries build-bench/bench/bench_queries   # section 10, by hand")
     w("build-bench/bench/bench_idle [--quick]   # section 5, a step with nothing to do")
     w("build-bench/bench/bench_exact [--quick] [--max-n N] [--only disks|scaling|scenes|d3|d7|gas|big]   # section 9")
     w("CIRCLECOLLIDE_LIBRARY=build-bench/src/libcirclecollide.so PYTHONPATH=bindings/python/src \\")
