@@ -441,7 +441,19 @@ typedef struct cc_world_def {
     cc_vec2 period;           /* a component > 0 makes the world wrap along that axis with that
                                  period, positions kept in [0, period); 0 leaves it open (default
                                  (0, 0)); see "Periodic boxes" */
+    /* ---- 1.2 (a def of 1.0's or 1.1's size gets CC_USES_ALL) ---- */
+    unsigned uses;            /* CC_USES_* bits: what this world may use (default CC_USES_ALL); see
+                                 "World memory" */
 } cc_world_def;
+
+/* What a world may use (cc_world_def.uses, 1.2): cc_world_size reserves memory only for what
+ * uses lists, and a call that needs what the world did not reserve returns CC_ERR_INVALID and
+ * changes nothing. uses = 0 is 1.0's world: the least memory and the fastest path. */
+#define CC_USES_PROPS 1u   /* per-body properties: restitution, filters, per-circle decel */
+#define CC_USES_SENSORS 2u /* sensor circles */
+#define CC_USES_ROLLING 4u /* rolling_decel or per-circle deceleration */
+#define CC_USES_CLOTH 8u   /* spin (cloth) */
+#define CC_USES_ALL 0xffffu
 
 /* Defaults for every field that fits in struct_size bytes (whole fields; the bytes of fields
  * this library does not know are zeroed), and sets def->struct_size = struct_size; does nothing
