@@ -253,6 +253,41 @@ static void test_a_plain_scene_runs_alike_with_and_without_reserves(void)
         }
 }
 
+/* The turns of a periodic world live in their own block, outside the bodies: they must follow
+ * each circle as storage is sorted. An unwrapped position moves continuously, so between two
+ * short steps it moves by far less than half a period; a count left with another circle's
+ * storage moves it by a whole period. */
+static void test_turns_follow_their_circles_through_sorting(void)
+{
+    enum { N = 300 };
+    static cc_vec2 u0[N], u1[N];
+    tw_mem m;
+    cc_world_def d = def_of(N, 0, CC_MODE_EXACT, 0);
+    cc_world *w;
+    uint64_t seed = 5;
+    double L = 30.0;
+    int i, k;
+    d.period.x = d.period.y = L;
+    w = tw_make(&m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    for (i = 0; i < N; i++) {
+        cc_circle c = tw_circle(L * ((i % 20) + 0.5) / 20.0, L * ((i / 20) + 0.5) / 20.0, 4.0 * tw_rand(&seed) - 2.0,
+                                4.0 * tw_rand(&seed) - 2.0, 0.5, 1.0);
+        TEST_ASSERT_EQUAL_INT(i, cc_world_add_circle(w, &c));
+    }
+    TEST_ASSERT_EQUAL_INT(N, cc_world_get_unwrapped_all(w, NULL, u0, N));
+    for (k = 0; k < 1600; k++) {
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.05));
+        TEST_ASSERT_EQUAL_INT(N, cc_world_get_unwrapped_all(w, NULL, u1, N));
+        for (i = 0; i < N; i++)
+            TEST_ASSERT_TRUE(fabs(u1[i].x - u0[i].x) < 0.5 * L && fabs(u1[i].y - u0[i].y) < 0.5 * L);
+        memcpy(u0, u1, sizeof u0);
+    }
+    /* enough events for storage to have been sorted more than once (sort.c: 64 per circle) */
+    TEST_ASSERT_TRUE(tw_stats(w).events > 2u * (64u * N + 1024u));
+    tw_free(&m);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -261,5 +296,6 @@ int main(void)
     RUN_TEST(test_calls_that_need_an_unreserved_use_are_refused);
     RUN_TEST(test_each_use_allows_its_own_calls);
     RUN_TEST(test_a_plain_scene_runs_alike_with_and_without_reserves);
+    RUN_TEST(test_turns_follow_their_circles_through_sorting);
     return UNITY_END();
 }
