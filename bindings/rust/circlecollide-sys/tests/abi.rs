@@ -36,7 +36,7 @@ fn rust_table() -> Vec<(&'static str, &'static str, usize, usize)> {
         cc_circle_soa { px, py, vx, vy, radius }
         cc_contact_event { a, b, segment, t, point, normal, impulse }
         cc_sensor_event { sensor, visitor, begin, t }
-        cc_world_def { struct_size, max_circles, max_segments, mode, restitution, rest_speed, cell_size, max_events, on_contact, user, rolling_decel, restitution_mix, on_sensor, period }
+        cc_world_def { struct_size, max_circles, max_segments, mode, restitution, rest_speed, cell_size, max_events, on_contact, user, rolling_decel, restitution_mix, on_sensor, period, uses }
         cc_world_stats { struct_size, collisions, events, stale_events, pairs_tested, cell_crossings, max_overlap, virial, wall_impulse }
         cc_circle_props { struct_size, restitution, rolling_decel, category, mask, sensor }
         cc_segment_props { struct_size, restitution, category, mask }
