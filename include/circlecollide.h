@@ -425,7 +425,9 @@ typedef struct cc_world_def {
     int max_circles;          /* capacity for circles, >= 0 (default 64) */
     int max_segments;         /* capacity for walls, >= 0 (default 0: a scene without walls pays nothing) */
     int mode;                 /* a cc_mode (default CC_MODE_EXACT) */
-    double restitution;       /* coefficient of restitution of every contact, [0, 1] (default 1) */
+    double restitution;       /* [0, 1]: the restitution every circle and wall starts with (default
+                                 1); a contact's is restitution_mix of its two sides' (see
+                                 Restitution under "Per-body properties") */
     double rest_speed;        /* >= 0: approach speeds below this collide with restitution 0: the
                                  remedy for inelastic collapse when restitution < 1 (default 0) */
     double cell_size;         /* >= 0: smallest grid cell size; 0 = derived from the radii (default 0) */
@@ -613,11 +615,16 @@ CC_API int cc_world_get_stats(const cc_world *w, cc_world_stats *out);
 /* ---- Per-body properties: restitution, filters, sensors (1.1) ------------------------------- */
 /* Every circle and wall carries properties. A new circle gets def.restitution,
  * def.rolling_decel, category 1, mask 0xFFFFFFFF and is not a sensor; a new wall gets
- * def.restitution, category 1 and mask 0xFFFFFFFF. A world whose circles and walls keep these
- * runs exactly as it would without them (the same events, bit for bit, at the same cost).
+ * def.restitution, category 1 and mask 0xFFFFFFFF. A default is a value like any other: a side
+ * that keeps it is mixed as one given that value. A world whose circles and walls keep these
+ * runs exactly as it would without them (the same events, bit for bit, at the same cost), its
+ * contacts at the restitution its mix makes of def.restitution with itself (see Restitution).
  *
  * Restitution  A contact's restitution is def.restitution_mix of the two sides' (a circle's and
- *           a wall's for a wall contact); approaches slower than def.rest_speed still get 0. A
+ *           a wall's for a wall contact); approaches slower than def.rest_speed still get 0.
+ *           The mix is of the sides' values, wherever they came from: between two sides of
+ *           def.restitution e, MIN, MAX and MEAN give e itself, PRODUCT gives e * e (0.81 for
+ *           0.9: with it, def.restitution is each material's factor, not the contact's). A
  *           simultaneous impact (see "Simultaneous") uses the smallest restitution of the
  *           contacts in its cluster: a cue ball into a rack of one material behaves as before,
  *           a ball into a corner of two cushions of 0.75 and 0.6 gets 0.6 at both, and kinetic

@@ -154,7 +154,8 @@ class World:
     ``mode`` is ``"exact"`` (every collision in time order), ``"swept"`` or ``"discrete"``;
     ``restitution`` in [0, 1] is what new circles and walls get (``set_circle_props`` and
     ``set_segment_props`` change it per body), and ``restitution_mix`` (``"min"``, ``"max"``,
-    ``"product"`` or ``"mean"``) makes a contact's from its two sides'. ``rolling_decel`` (>= 0)
+    ``"product"`` or ``"mean"``) makes a contact's from its two sides' (between two sides that
+    keep ``restitution``: that value, or its square under ``"product"``). ``rolling_decel`` (>= 0)
     is the deceleration new movable circles get (rolling to rest). ``period=(px, py)``: a
     component > 0 makes the world wrap along that axis (positions kept in [0, period)).
 
