@@ -255,12 +255,25 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *
  * Memory    Everything lives inside [memory, memory + bytes): the world stores no address, not
  *           even into its own block, so a world may be copied (memcpy) to other 8-byte aligned
- *           memory of the same size and used from there. It keeps no pointer to the caller's
+ *           memory of the same size and used from there (while a call that fires callbacks
+ *           runs it holds its own address as a number, never followed: see "Snapshots"). It keeps no pointer to the caller's
  *           defs, circles or segments (it copies them). About 225 bytes per circle (one 64-byte
  *           line of hot state, the predicted event, queue and grid entries, and 56 bytes of
  *           properties that only a world using them reads) plus about 200 per wall (the wall, its
  *           properties and its place in the walls' tree);
  *           EXACT adds one block of at most 15 KB for simultaneous impacts (see below).
+ * Snapshots A memcpy of the world is a snapshot wherever it is taken, also from inside a
+ *           callback: a world is busy (CC_ERR_BUSY for its mutators and cc_world_step) only at
+ *           the address of the world whose call is running, so a copy in other memory is a world
+ *           of its own at once. Taken inside a callback it is the world as the callback sees it,
+ *           at that contact's time, with what the call had still to do left undone; the first
+ *           call that changes the copy (a step, a mutator) makes it whole (every prediction made
+ *           again at its time, as after an added wall) and the copy goes on from there (not bit
+ *           for bit the run it was taken from; two copies of it treated alike end alike). Only
+ *           its bytes copied back over the very world it was taken from cannot be told from that
+ *           world inside its call, and are busy there: to keep such a snapshot for later, call
+ *           cc_world_step(copy, 0) once where it was copied to (the world itself refuses that
+ *           call from its callback); from then on it is an ordinary world, to be copied anywhere.
  * Ids       cc_world_add_circle returns the most recently removed id when there is one (removed
  *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid
  *           and names the same circle until it is removed; others are never renumbered.
