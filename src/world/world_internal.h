@@ -516,6 +516,14 @@ void cc__sensor_pass(cc_world *w);
 void cc__rebuild(cc_world *w); /* grid, overlaps and (EXACT) every prediction, at w->now */
 void cc__settle_body(cc_world *w, int id); /* a body added or set: overlaps and predictions */
 void cc__settle_props(cc_world *w, int id); /* a body given other properties, where it is */
+/* sides.c: SWEPT and DISCRETE, at w->now: a centre whose path since its lazy state (or, with
+ * from_stash, since the position cc__side_stash kept) crossed a wall is put back on the side it
+ * came from, with the wall's impulse. cc__side_stash keeps every body's position now (in its
+ * event, which these modes do not use then) before the overlap pass pushes bodies apart. */
+void cc__keep_wall_sides(cc_world *w, int from_stash);
+void cc__side_stash(cc_world *w);
+/* The same for body i alone, from its lazy state (SWEPT, before it is carried to an impact). */
+void cc__keep_body_side(cc_world *w, int i);
 int cc__step_exact(cc_world *w, double t_end);
 int cc__step_swept(cc_world *w, double dt);
 int cc__step_discrete(cc_world *w, double dt);
