@@ -285,6 +285,16 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * Modes     CC_MODE_EXACT (event-driven, see below), CC_MODE_SWEPT and CC_MODE_DISCRETE (see
  *           cc_mode). All three use the same pair functions (cc_sweep, cc_sweep_segment,
  *           cc_respond, cc_respond_segment, cc_separate) and the same grid.
+ * Walls     Walls keep their side in every mode, at any speed: EXACT finds every wall impact;
+ *           SWEPT finds a circle's first impact of the step and DISCRETE none, and there a centre
+ *           whose straight path since its last impulse (or the step's start) crossed a wall's
+ *           segment, or that a push-apart carried across one, is put back a radius from the
+ *           wall's line on the side it came from and takes the wall's impulse (up to 4 walls per
+ *           circle and step, so that a corner holds). A centre passing beyond a wall's end went
+ *           round it; a point wall (a == b) has no sides: a circle is pushed off it towards where
+ *           its centre is. A circle still passes through other circles in SWEPT and DISCRETE
+ *           (see cc_mode); bench_world table counts escapes against |v| dt / r (0 in every mode
+ *           up to 16 radii a step, docs/BENCHMARKS.md).
  * EXACT     Every impact is found and processed in time order, at any speed: no tunnelling.
  *           Each moving circle holds one predicted event (an impact with a circle or a wall, or
  *           leaving its grid cell) in a priority queue; an impact changes the velocities of the
@@ -377,11 +387,13 @@ typedef enum cc_mode {
     CC_MODE_SWEPT = 1,   /* once per step: the grid is rebuilt (overlaps pushed apart), each
                             circle's first impact in the step is found from the motions at the
                             start of the step, and the impacts are resolved in time order
-                            without predicting again; a second impact of a circle within one
-                            step is missed (it is left overlapping until the next step) */
+                            without predicting again; a second impact of a circle with a circle
+                            within one step is missed (it is left overlapping until the next
+                            step), one with a wall is not (see "Walls") */
     CC_MODE_DISCRETE = 2 /* move every circle by dt, then push apart every overlapping pair
                             and wall contact and give approaching pairs their impulse; a circle
-                            moving more than its size per step can pass through others */
+                            moving more than its size per step can pass through other circles,
+                            never through a wall (see "Walls") */
 } cc_mode;
 
 /* Passed to the contact callback for every impulse the world applies. */
