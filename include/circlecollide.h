@@ -263,7 +263,8 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           properties and its place in the walls' tree);
  *           EXACT adds one block of at most 15 KB for simultaneous impacts (see below).
  * Snapshots A memcpy of the world is a snapshot wherever it is taken, also from inside a
- *           callback: a world is busy (CC_ERR_BUSY for its mutators and cc_world_step) only at
+ *           callback: a world is busy (its mutators and cc_world_step refused: CC_ERR_BUSY, or
+ *           CC_ERR_INVALID for a 1.0 or 1.1 def) only at
  *           the address of the world whose call is running, so a copy in other memory is a world
  *           of its own at once. Taken inside a callback it is the world as the callback sees it,
  *           at that contact's time, with what the call had still to do left undone; the first
@@ -424,7 +425,8 @@ typedef struct cc_contact_event {
  * step and the props setters called from inside return CC_ERR_BUSY (CC_ERR_INVALID in a world
  * made from a 1.0 or 1.1 def) and do nothing, whichever call fired it (the world fuzzer tries
  * each from both callbacks). Record what you need and act on it after that call returns (e.g.
- * remove a pocketed ball after the step). */
+ * remove a pocketed ball after the step); a memcpy of the world taken there is a world of its
+ * own, not refused (see "Snapshots"). */
 typedef void (*cc_contact_fn)(const cc_contact_event *event, void *user);
 
 /* Passed to the sensor callback when a circle begins or stops overlapping a sensor circle (see
