@@ -29,6 +29,7 @@ static cc_world *make(tw_mem *m, int mode, double px, double py, int max_circles
     d.on_sensor = on_sensor;
     d.on_contact = on_contact;
     d.user = user;
+    d.max_events = 2000; /* a circle squeezed between a wall and an immovable one jams a step */
     return tw_make(m, &d, 0);
 }
 
@@ -591,7 +592,7 @@ static void test_promises_in_every_mode_and_state(void)
     int scene, mode;
     memset(&t, 0, sizeof t);
     t.rng = UINT64_C(0x32);
-    for (scene = 0; scene < 60; scene++)
+    for (scene = 0; scene < 200; scene++)
         for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
             play(&t, mode, scene % 4, scene % 3 == 0 ? 24 : PT_MAX);
     printf("promises: %d checks, %ld casts, %ld queries against the brute force (%ld from inside callbacks), "
