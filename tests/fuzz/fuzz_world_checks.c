@@ -583,8 +583,9 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  * D5  SWEPT never stops at max_events (src/world/swept.c cc__step_swept counts events but has no
  *     cap; the header's "no step processes more than def.max_events events" reads as every mode):
  *     a step with max_events 3 processes 4 and returns CC_OK. Code or header to change;
- * D6  a query in a periodic world whose centre lies more than half a period outside [0, period)
- *     misses circles: cc__near_d (src/world/world_internal.h) shifts by one period at most;
+ * D6  fixed: a query in a periodic world whose centre lies more than half a period outside
+ *     [0, period) missed circles (cc__near_d shifts by one period at most); judged again with
+ *     query_tol's tolerance, which is the period's, not the coordinate's;
  * D7  EXACT, a circle added on top of others (and a wall), one of which moves at 1e308: contact
  *     events with a NaN point, and that circle left with velocity (Inf, -Inf) and a NaN position
  *     (tests/fuzz/world_defects/d7-*): the impulse arithmetic overflows (the pair functions
