@@ -160,13 +160,16 @@ typedef struct pt {
     int n_seg;
     cc_segment seg[PT_SEG];
     unsigned char inside[PT_MAX][PT_MAX]; /* [sensor][visitor], as the events said */
-    int in_callback, failures, checks;
-    long casts, queries, events, callback_checks;
+    int in_callback, failures, checks, failed_casts, failed_queries, failed_sensors;
+    long casts, queries, events, callback_checks, sensor_events, contact_events;
     char call[64];
 } pt;
 
 static void fail(pt *t, const char *what)
 {
+    t->failed_casts += strstr(what, "cast") != NULL;
+    t->failed_queries += strstr(what, "query") != NULL;
+    t->failed_sensors += strstr(what, "sensor") != NULL;
     if (t->failures++ < 10)
         printf("  %s mode, period (%g, %g), after %s%s: %s\n", mode_name[t->mode], t->P[0], t->P[1], t->call,
                t->in_callback ? " (from a callback)" : "", what);
@@ -479,6 +482,7 @@ static void pt_on_sensor(const cc_sensor_event *e, void *user)
 {
     pt *t = (pt *)user;
     t->events++;
+    t->sensor_events++;
     if (e->sensor < 0 || e->sensor >= PT_MAX || e->visitor < 0 || e->visitor >= PT_MAX) {
         fail(t, "a sensor event names no circle");
         return;
@@ -498,6 +502,7 @@ static void pt_on_contact(const cc_contact_event *e, void *user)
 {
     pt *t = (pt *)user;
     (void)e;
+    t->contact_events++;
     if (t->in_callback == 0 && (++t->events & 7) == 0) {
         t->in_callback = 1;
         check_reads(t, 1, 1);
@@ -596,7 +601,8 @@ static void test_promises_in_every_mode_and_state(void)
         for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
             play(&t, mode, scene % 4, scene % 3 == 0 ? 24 : PT_MAX);
     printf("promises: %d checks, %ld casts, %ld queries against the brute force (%ld from inside callbacks), "
-           "%ld callbacks; %d failures\n", t.checks, t.casts, t.queries, t.callback_checks, t.events, t.failures);
+           "%ld sensor and %ld contact events; %d failures (%d casts, %d queries, %d sensor pairs)\n", t.checks, t.casts, t.queries,
+           t.callback_checks, t.sensor_events, t.contact_events, t.failures, t.failed_casts, t.failed_queries, t.failed_sensors);
     TEST_ASSERT_EQUAL_INT(0, t.failures);
 }
 
