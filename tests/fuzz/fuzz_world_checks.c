@@ -1195,7 +1195,13 @@ static void bf_image(cast_bf *b, cc_vec2 p, double rad, cc_vec2 d, double qx, do
     cx = ex - u * d.x, cy = ey - u * d.y;
     dmin = hypot(cx, cy);
     d0 = hypot(ex, ey);
-    graze = fabs(dmin - R) <= b->tol * (R + 1.0) || fabs(d0 - R) <= b->tol * (R + 1.0) || !(0.5 * rb > 0.0);
+    /* both solvers work in the pair's own frame: their rounding is of the pair's numbers (L), and
+     * hit or miss is rounding's where the squares of the closest (or the first) distance and of R
+     * are within 1e-9 L^2 (beyond, the entry time's error stays near an ulp of L) */
+    {
+        double L = d0 + sqrt(dd) + R, g = 1e-9 * L * L;
+        graze = fabs((dmin - R) * (dmin + R)) <= g || fabs((d0 - R) * (d0 + R)) <= g || !(0.5 * rb > 0.0);
+    }
     if (res == CC_HIT)
         bf_note(b, h.t, 0, id, !graze && h.t > b->tol && h.t < 1.0 - b->tol);
     else if (res == CC_OVERLAP)
