@@ -161,6 +161,9 @@ typedef struct pt {
     cc_segment seg[PT_SEG];
     unsigned char inside[PT_MAX][PT_MAX]; /* [sensor][visitor], as the events said */
     int in_callback, failures, checks, failed_casts, failed_queries, failed_sensors;
+    int stepping, settles_now; /* the call is a step; EXACT has stepped since its last wall */
+    double call_t0;            /* the world time when the call began */
+    long contacts_in_call;
     long casts, queries, events, callback_checks, sensor_events, contact_events;
     char call[64];
 } pt;
@@ -490,6 +493,9 @@ static void pt_on_sensor(const cc_sensor_event *e, void *user)
     if (t->inside[e->sensor][e->visitor] == (e->begin != 0))
         fail(t, "a sensor pair's events do not alternate begin, end");
     t->inside[e->sensor][e->visitor] = e->begin != 0;
+    /* at once (add, set, props): at the world's time; from a step: within it (EXACT), at its end */
+    if (!t->stepping ? e->t != t->call_t0 : !(e->t >= t->call_t0 && e->t <= cc_world_time(t->w)))
+        fail(t, "a sensor event at a time outside its call");
     if (t->in_callback == 0 && (t->events & 3) == 0) { /* what a callback sees is the world now */
         t->in_callback = 1;
         check_reads(t, 1, 1);
@@ -503,6 +509,10 @@ static void pt_on_contact(const cc_contact_event *e, void *user)
     pt *t = (pt *)user;
     (void)e;
     t->contact_events++;
+    t->contacts_in_call++;
+    /* only a step, or in EXACT between steps an add, set or props that pushes apart at once */
+    if (!t->stepping && !t->settles_now)
+        fail(t, "a contact event from a call that waits for the next step");
     if (t->in_callback == 0 && (++t->events & 7) == 0) {
         t->in_callback = 1;
         check_reads(t, 1, 1);
@@ -522,7 +532,8 @@ static cc_circle random_circle(pt *t)
 /* One random world played through a random call sequence, every promise checked after each call. */
 static void play(pt *t, int mode, int periods, int max_circles)
 {
-    tw_mem m;
+    tw_mem m, m2;
+    cc_world *twin;
     int calls, k, ids[PT_MAX], n;
     t->mode = mode;
     t->P[0] = periods & 1 ? 10.0 : 0.0;
@@ -530,23 +541,33 @@ static void play(pt *t, int mode, int periods, int max_circles)
     t->n_seg = 0;
     memset(t->inside, 0, sizeof t->inside);
     t->w = make(&m, mode, t->P[0], t->P[1], max_circles, PT_SEG, pt_on_sensor, pt_on_contact, t);
+    /* a twin fed the same calls, without callbacks: the same state, the same hash */
+    twin = make(&m2, mode, t->P[0], t->P[1], max_circles, PT_SEG, NULL, NULL, NULL);
     TEST_ASSERT_NOT_NULL(t->w);
+    TEST_ASSERT_NOT_NULL(twin);
+    t->settles_now = 0;
     strcpy(t->call, "init");
     check_reads(t, 2, 2);
     for (calls = 0; calls < 40; calls++) {
         double u = tw_rand(&t->rng);
         n = cc_world_get_circles(t->w, ids, NULL, PT_MAX);
+        t->call_t0 = cc_world_time(t->w);
+        t->stepping = 0;
         if (u < 0.3 || n == 0) {
             cc_circle c = random_circle(t);
             strcpy(t->call, "add");
             (void)cc_world_add_circle(t->w, &c);
+            (void)cc_world_add_circle(twin, &c);
         } else if (u < 0.45) {
             cc_circle c = random_circle(t);
+            int id = ids[(int)(tw_rand(&t->rng) * n)];
             strcpy(t->call, "set");
-            (void)cc_world_set_circle(t->w, ids[(int)(tw_rand(&t->rng) * n)], &c);
+            (void)cc_world_set_circle(t->w, id, &c);
+            (void)cc_world_set_circle(twin, id, &c);
         } else if (u < 0.52) {
             int id = ids[(int)(tw_rand(&t->rng) * n)];
             strcpy(t->call, "remove");
+            (void)cc_world_remove_circle(twin, id);
             if (cc_world_remove_circle(t->w, id) == CC_OK)
                 for (k = 0; k < PT_MAX; k++)
                     t->inside[id][k] = t->inside[k][id] = 0; /* forgotten, not reported */
@@ -554,8 +575,10 @@ static void play(pt *t, int mode, int periods, int max_circles)
             /* walls inside the box, away from the periods' edges */
             cc_segment s = tw_segment(rnd(t, 2, 8), rnd(t, 2, 8), rnd(t, 2, 8), rnd(t, 2, 8));
             strcpy(t->call, "add_segment");
+            (void)cc_world_add_segment(twin, &s);
             if (cc_world_add_segment(t->w, &s) >= 0)
                 t->seg[t->n_seg++] = s;
+            t->settles_now = 0; /* EXACT files everything again at its next step */
         } else if (u < 0.7) {
             cc_circle_props p;
             int id = ids[(int)(tw_rand(&t->rng) * n)];
@@ -566,10 +589,18 @@ static void play(pt *t, int mode, int periods, int max_circles)
             p.mask = tw_rand(&t->rng) < 0.8 ? 0xFFFFFFFFu : 1u;
             strcpy(t->call, "set_circle_props");
             (void)cc_world_set_circle_props(t->w, id, &p);
+            (void)cc_world_set_circle_props(twin, id, &p);
         } else {
+            double dt = rnd(t, 0.0, 0.25);
             strcpy(t->call, "step");
-            (void)cc_world_step(t->w, rnd(t, 0.0, 0.25));
+            t->stepping = 1;
+            (void)cc_world_step(t->w, dt);
+            (void)cc_world_step(twin, dt);
+            t->settles_now = mode == CC_MODE_EXACT;
         }
+        t->stepping = 0;
+        if (cc_world_hash(twin) != cc_world_hash(t->w))
+            fail(t, "a twin fed the same calls hashes otherwise");
         check_reads(t, 4, 3);
         if ((calls & 7) == 7) { /* a copy answers as the original */
             unsigned char *copy = (unsigned char *)malloc(m.bytes + 16);
@@ -588,6 +619,7 @@ static void play(pt *t, int mode, int periods, int max_circles)
         }
     }
     tw_free(&m);
+    tw_free(&m2);
 }
 
 /* Random worlds in every mode, open, periodic in x, in y and in both, all pairs and gridded. */
