@@ -150,32 +150,32 @@ static void cc__cast_walls(cc__cast *c)
  * current grid, at most one per circle (a longer path is walked in pieces half a period long, as
  * without a grid: cc__visit_region gives every circle's images in each); one piece for an open
  * world without a grid (every circle once: no images to find); 0 for a periodic cast that would
- * look at more than CC__CAST_IMAGES images of each circle. */
+ * look at more than CC__CAST_IMAGES images of each circle, counted on pieces half a period (or
+ * the radius) long whatever the mode or state, so that which casts see every image is one rule. */
 static long cc__cast_pieces(const cc_world *w, cc_vec2 d, double radius, double len)
 {
-    double piece = HUGE_VAL, n, looks = 1.0, pmin = HUGE_VAL, rmax = 0.0;
+    double piece, n, looks = 1.0, pmin = HUGE_VAL;
     int k;
+    if (w->features & CC__F_PERIODIC) {
+        for (k = 0; k < 2; k++)
+            if (w->period[k] > 0.0 && w->period[k] < pmin)
+                pmin = w->period[k];
+        piece = 0.5 * pmin > radius ? 0.5 * pmin : radius;
+        n = len / piece < 1.0 ? 1.0 : ceil(len / piece);
+        /* a circle fits its period three times over (cc__fits_period): its radius is below pmin / 4 */
+        for (k = 0; k < 2; k++)
+            if (w->period[k] > 0.0)
+                looks *= (fabs(k == 0 ? d.x : d.y) / n + 2.0 * (radius + 0.25 * pmin)) / w->period[k] + 2.0;
+        if (!(n * looks <= CC__CAST_IMAGES))
+            return 0;
+    } else {
+        n = 1.0;
+    }
     if (cc__grid_current(w)) {
         piece = w->cs > radius ? w->cs : radius;
         if (len / piece < (double)w->id_end)
             return len / piece < 1.0 ? 1 : (long)ceil(len / piece);
     }
-    if (!(w->features & CC__F_PERIODIC))
-        return 1;
-    for (k = 0; k < 2; k++)
-        if (w->period[k] > 0.0 && w->period[k] < pmin)
-            pmin = w->period[k];
-    /* a circle fits its period three times over (cc__fits_period): its radius is below pmin / 4 */
-    rmax = 0.25 * pmin;
-    piece = 0.5 * pmin > radius ? 0.5 * pmin : radius;
-    n = len / piece < 1.0 ? 1.0 : ceil(len / piece);
-    for (k = 0; k < 2; k++)
-        if (w->period[k] > 0.0) {
-            double ext = fabs(k == 0 ? d.x : d.y) / n + 2.0 * (radius + rmax);
-            looks *= ext / w->period[k] + 2.0;
-        }
-    if (!(n * looks <= CC__CAST_IMAGES))
-        return 0;
     return (long)n;
 }
 
@@ -226,8 +226,10 @@ CC_API int cc_world_cast_circle_filtered(const cc_world *w, cc_vec2 p, double ra
     for (k = 0; k < pieces; k++) {
         double t0 = (double)k / (double)pieces, t1 = (double)(k + 1) / (double)pieces;
         cc_vec2 a = cc__advance(p, d, t0), b = cc__advance(p, d, t1);
-        /* the piece's box grown by the radius, and by far more than the rounding of a and b */
-        double g = radius + 0x1p-30 * (fabs(a.x) + fabs(a.y) + fabs(b.x) + fabs(b.y) + radius);
+        /* the piece's box grown by the radius, and by far more than the rounding of a and b
+         * (2^-40 of them: thousands of ulps, and few enough that a periodic box holds no more
+         * images than its width gives it) */
+        double g = radius + 0x1p-40 * (fabs(a.x) + fabs(a.y) + fabs(b.x) + fabs(b.y) + radius);
         cc__visit_region(w, (a.x < b.x ? a.x : b.x) - g, (a.y < b.y ? a.y : b.y) - g, (a.x < b.x ? b.x : a.x) + g,
                          (a.y < b.y ? b.y : a.y) + g, 1, cc__cast_visit, &c);
         if (c.t < t1)

@@ -33,12 +33,13 @@ static inline int64_t cc__logical_cell(const cc_world *w, double x, int k)
 }
 
 /* The first and last image index n (centre q + n P) whose centre lies in [lo, hi] along periodic
- * axis k, widened by far more than the rounding of the division; 0 and -1 when none. */
+ * axis k, widened by far more than the rounding of the subtraction and the division (2^-48 of
+ * the index, and of 1); an empty range (n1 < n0) when none. */
 static inline void cc__image_range(const cc_world *w, double q, double lo, double hi, int k, double *n0, double *n1)
 {
-    double P = w->period[k], m = 0x1p-30 * (fabs(lo) + fabs(hi) + P);
-    *n0 = ceil((lo - m - q) / P);
-    *n1 = floor((hi + m - q) / P);
+    double P = w->period[k], a = (lo - q) / P, b = (hi - q) / P;
+    *n0 = ceil(a - 0x1p-48 * (fabs(a) + 1.0));
+    *n1 = floor(b + 0x1p-48 * (fabs(b) + 1.0));
 }
 
 /* Circle j's nearest image to (cx, cy) (a point, a box's centre or a path's middle). */
@@ -60,15 +61,15 @@ static inline void cc__visit_images_in_box(const cc_world *w, int j, double x0, 
     int k;
     cc__body_pos(w, j, w->now, &q[0], &q[1]);
     for (k = 0; k < 2; k++)
-        if (w->period[k] > 0.0) {
+        if (w->period[k] > 0.0)
             cc__image_range(w, q[k], lo[k] - r, hi[k] + r, k, &n0[k], &n1[k]);
-            if (!(fabs(n0[k]) < 0x1p52 && fabs(n1[k]) < 0x1p52 && n1[k] - n0[k] < 0x1p20)) {
-                /* a box that has lost its place within the period (or a path that overflowed):
-                 * the nearest image to its centre, as the grid's walk gives it there */
-                cc__visit_nearest(w, j, 0.5 * (x0 + x1), 0.5 * (y0 + y1), visit, ctx);
-                return;
-            }
-        }
+    if (!(fabs(n0[0]) + fabs(n1[0]) + fabs(n0[1]) + fabs(n1[1]) < 0x1p52 &&
+          (n1[0] - n0[0] + 1.0) * (n1[1] - n0[1] + 1.0) <= 0x1p20)) {
+        /* a box that has lost its place within the period (or a path that overflowed), or holds
+         * a million images (the casts keep far below): the nearest image to its centre */
+        cc__visit_nearest(w, j, 0.5 * (x0 + x1), 0.5 * (y0 + y1), visit, ctx);
+        return;
+    }
     for (a = n0[0]; a <= n1[0]; a++)
         for (b = n0[1]; b <= n1[1]; b++)
             visit(ctx, j, a * w->period[0], b * w->period[1]);

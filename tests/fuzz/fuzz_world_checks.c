@@ -1147,9 +1147,10 @@ static void bf_note(cast_bf *b, double t, int wall, int id, int sure)
     }
 }
 
-/* How many images of each circle the library's cast looks at (src/world/cast.c, the header's
- * "Periodic boxes": a cast past CC__CAST_IMAGES looks at nearest images only): the pieces half a
- * period (or the radius) long times the images each piece's box holds. */
+/* How many images of each circle the library counts for a cast (src/world/cast.c, the header's
+ * "Periodic boxes": a cast past CC__CAST_IMAGES, 16384, looks at nearest images only, in every
+ * mode and state): the pieces half a period (or the radius) long times the images each piece's
+ * box holds. */
 static double cast_looks(const model *m, cc_vec2 d, double rad)
 {
     double pmin = HUGE_VAL, piece, n, looks = 1.0, len = hypot(d.x, d.y);
