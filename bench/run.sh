@@ -50,6 +50,7 @@ if [ $quick = 1 ]; then
   "$bin/bench_idle" --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" casts --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" walls --quick | tee -a "$log" | grep '^figure '
+  "$bin/bench_queries" periodic --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_exact" --quick | tee -a "$log" | grep '^figure '
   echo "(details: $log)"
   exit 0
@@ -94,6 +95,7 @@ echo "== world: a step with nothing to do (N circles at rest, or moving slowly, 
 echo "== queries and walls at scale" | tee -a "$log"
 "$bin/bench_queries" casts | tee "$out/casts.txt"
 "$bin/bench_queries" walls | tee "$out/walls.txt"
+"$bin/bench_queries" periodic | tee "$out/periodic_casts.txt"
 
 echo "== EXACT at research speed (issue 16)" | tee -a "$log"
 "$bin/bench_exact" | tee "$out/exact.txt"
