@@ -162,6 +162,7 @@ typedef struct pt {
     unsigned char inside[PT_MAX][PT_MAX]; /* [sensor][visitor], as the events said */
     int in_callback, failures, checks, failed_casts, failed_queries, failed_sensors;
     int stepping, settles_now; /* the call is a step; EXACT has stepped since its last wall */
+    int removing;              /* the call is a remove: it fires nothing */
     double call_t0;            /* the world time when the call began */
     long contacts_in_call;
     long casts, queries, events, callback_checks, sensor_events, contact_events;
@@ -475,6 +476,17 @@ static void check_reads(pt *t, int casts, int queries)
         check_query(t, &s);
     if (!t->in_callback) {
         check_sensors(t, &s);
+        for (k = 0; k < s.n; k++) { /* the unwrapped position: the position plus whole periods */
+            cc_vec2 u;
+            int a;
+            if (cc_world_get_unwrapped(t->w, s.ids[k], &u) != CC_OK)
+                fail(t, "get_unwrapped of a live circle");
+            for (a = 0; a < 2; a++) {
+                double x = a ? s.c[k].pos.y : s.c[k].pos.x, ux = a ? u.y : u.x, n;
+                if (t->P[a] == 0.0 ? ux != x : (n = (ux - x) / t->P[a], fabs(n - floor(n + 0.5)) > 1e-9))
+                    fail(t, "an unwrapped position that is not the position plus whole periods");
+            }
+        }
         if (cc_world_hash(t->w) != h0)
             fail(t, "casts and queries changed the hash");
     }
@@ -493,6 +505,8 @@ static void pt_on_sensor(const cc_sensor_event *e, void *user)
     if (t->inside[e->sensor][e->visitor] == (e->begin != 0))
         fail(t, "a sensor pair's events do not alternate begin, end");
     t->inside[e->sensor][e->visitor] = e->begin != 0;
+    if (t->removing)
+        fail(t, "a sensor event from a remove (its overlaps are forgotten)");
     /* at once (add, set, props): at the world's time; from a step: within it (EXACT), at its end */
     if (!t->stepping ? e->t != t->call_t0 : !(e->t >= t->call_t0 && e->t <= cc_world_time(t->w)))
         fail(t, "a sensor event at a time outside its call");
@@ -511,7 +525,7 @@ static void pt_on_contact(const cc_contact_event *e, void *user)
     t->contact_events++;
     t->contacts_in_call++;
     /* only a step, or in EXACT between steps an add, set or props that pushes apart at once */
-    if (!t->stepping && !t->settles_now)
+    if ((!t->stepping && !t->settles_now) || t->removing)
         fail(t, "a contact event from a call that waits for the next step");
     if (t->in_callback == 0 && (++t->events & 7) == 0) {
         t->in_callback = 1;
@@ -568,9 +582,11 @@ static void play(pt *t, int mode, int periods, int max_circles)
             int id = ids[(int)(tw_rand(&t->rng) * n)];
             strcpy(t->call, "remove");
             (void)cc_world_remove_circle(twin, id);
+            t->removing = 1;
             if (cc_world_remove_circle(t->w, id) == CC_OK)
                 for (k = 0; k < PT_MAX; k++)
                     t->inside[id][k] = t->inside[k][id] = 0; /* forgotten, not reported */
+            t->removing = 0;
         } else if (u < 0.57 && t->n_seg < PT_SEG) {
             /* walls inside the box, away from the periods' edges */
             cc_segment s = tw_segment(rnd(t, 2, 8), rnd(t, 2, 8), rnd(t, 2, 8), rnd(t, 2, 8));
