@@ -5,7 +5,9 @@
  *
  *   bench_queries casts [--quick]   cast and query cost, N = 1e3 .. 1e6 (1e5 with --quick)
  *   bench_queries walls [--quick]   the gas with 4 walls and with 10,000 short walls outside it
- *   bench_queries periodic [--quick]  periodic casts in each mode against the walled cast */
+ *   bench_queries periodic [--quick]  periodic casts in each mode against the walled cast
+ *   bench_queries filter [--quick]  casts and queries unfiltered, _filtered passing all, and
+ *                                   _filtered with ignore= (gas of 10,000; 5,000 with --quick) */
 #include "bench_scenes.h"
 #include "bench_util.h"
 
@@ -249,6 +251,124 @@ static int cmd_periodic(int quick)
     return 0;
 }
 
+/* The query filter (1.2): each cast and query as the 1.1 call (a mask), as its _filtered twin
+ * with a filter that passes everything (CC_QUERY_FILTER_DEFAULT), with ignore= a circle far from
+ * every path (the one farthest from the box's centre: the same answers, the filter's own cost), and
+ * with ignore= the circle nearest the start (a cue ball's own cast: the cast goes on past it to
+ * the next, a longer search); the same points in every variant, the variants' order rotated each
+ * round, ratios to the unfiltered call per round. */
+enum { F_PLAIN, F_PASS, F_IGNORE_FAR, F_IGNORE, F_COUNT };
+
+/* ns per call of one kind (0 ray, 1 cast of radius 0.5, 2 disc query of radius 1.5) in the
+ * variant var, from the same random points (seeded by the round); the ignored circle is the one
+ * nearest each start (what a cue ball's own cast leaves out), found before the clock starts. */
+static double one_kind(cc_world *w, double L, const int *near, int far, int kind, int var, int round, int per,
+                       long *found)
+{
+    bench_rng rng;
+    int k, ids[64];
+    double t0;
+    cc_query_filter f = CC_QUERY_FILTER_DEFAULT;
+    cc_cast_hit h;
+    rng.s = 1234u + (uint64_t)round;
+    t0 = bench_now();
+    for (k = 0; k < per; k++) {
+        cc_vec2 p, d;
+        double ang = bench_uniform(&rng, 0.0, 6.283185307179586), rad = kind == 1 ? 0.5 : 0.0;
+        int rc;
+        p.x = bench_uniform(&rng, 0.1, 0.9) * L, p.y = bench_uniform(&rng, 0.1, 0.9) * L;
+        d.x = 10.0 * cos(ang), d.y = 10.0 * sin(ang);
+        f.ignore = var == F_IGNORE ? near[k] : var == F_IGNORE_FAR ? far : -1;
+        if (kind == 2)
+            rc = var == F_PLAIN ? cc_world_query_circle(w, p, 1.5, 0xFFFFFFFFu, ids, 64)
+                                : cc_world_query_circle_filtered(w, p, 1.5, &f, ids, 64);
+        else
+            rc = var == F_PLAIN ? cc_world_cast_circle(w, p, rad, d, 0xFFFFFFFFu, &h)
+                                : cc_world_cast_circle_filtered(w, p, rad, d, &f, &h);
+        *found += kind == 2 ? rc : rc != CC_MISS ? h.circle : -1;
+    }
+    return (bench_now() - t0) * 1e9 / per;
+}
+
+static int cmd_filter(int quick)
+{
+    static const char *const kinds[3] = {"ray cast", "circle cast r 0.5", "disc query r 1.5"};
+    static const char *const vars[F_COUNT] = {"unfiltered (mask)", "_filtered, passes all", "_filtered, ignore= far",
+                                              "_filtered, ignore= near"};
+    enum { PER = 20000 };
+    int n = quick ? 5000 : 10000, rounds = quick ? 3 : 11, r, kind, var, k, far = -1;
+    bench_scene s;
+    qworld q;
+    cc_world *w;
+    int *near = bench_alloc(PER * sizeof *near);
+    double t[3][F_COUNT][16], ratio[3][F_COUNT][16];
+    long found[3][F_COUNT];
+    memset(found, 0, sizeof found);
+    bench_scene_gas(&s, n, 0.3, 7);
+    make_gas(&q, &s, 0, 1);
+    w = q.w;
+    { /* the circle farthest from the box's centre: in a corner, at least 0.14 L from every start
+         (16 radii at N = 5000), beyond every path */
+        cc_circle *all = bench_alloc((size_t)n * sizeof *all);
+        int *ids = bench_alloc((size_t)n * sizeof *ids), i, m = cc_world_get_circles(w, ids, all, n);
+        double best = -1.0;
+        for (i = 0; i < m; i++) {
+            double dx = all[i].pos.x - 0.5 * q.L, dy = all[i].pos.y - 0.5 * q.L;
+            if (dx * dx + dy * dy > best)
+                best = dx * dx + dy * dy, far = ids[i];
+        }
+        free(all);
+        free(ids);
+    }
+    for (r = 0; r < rounds; r++) {
+        for (kind = 0; kind < 3; kind++) {
+            bench_rng rng;
+            rng.s = 1234u + (uint64_t)r;
+            for (k = 0; k < PER; k++) { /* the circle nearest each start point: what ignore= leaves out */
+                cc_vec2 p;
+                int ids[8], m;
+                double rq = 0.25;
+                (void)bench_uniform(&rng, 0.0, 1.0);
+                p.x = bench_uniform(&rng, 0.1, 0.9) * q.L, p.y = bench_uniform(&rng, 0.1, 0.9) * q.L;
+                while ((m = cc_world_query_circle(w, p, rq, 0xFFFFFFFFu, ids, 8)) == 0)
+                    rq *= 2.0;
+                near[k] = ids[0];
+            }
+            for (var = 0; var < F_COUNT; var++) {
+                int which = (var + r) % F_COUNT; /* rotate which runs first */
+                t[kind][which][r] = one_kind(w, q.L, near, far, kind, which, r, PER, &found[kind][which]);
+            }
+            for (var = 0; var < F_COUNT; var++)
+                ratio[kind][var][r] = t[kind][var][r] / t[kind][F_PLAIN][r];
+        }
+    }
+    printf("%-18s %-22s %9s %20s %26s\n", "call", "variant", "ns/call", "spread", "ratio to unfiltered [min-max]");
+    for (kind = 0; kind < 3; kind++)
+        for (var = 0; var < F_COUNT; var++) {
+            double lo, hi, rlo, rhi;
+            bench_range(t[kind][var], (size_t)rounds, &lo, &hi);
+            bench_range(ratio[kind][var], (size_t)rounds, &rlo, &rhi);
+            printf("%-18s %-22s %9.1f %9.1f - %-9.1f %12.3f [%.3f-%.3f]%s\n", kinds[kind], vars[var],
+                   bench_median(t[kind][var], (size_t)rounds), lo, hi, bench_median(ratio[kind][var], (size_t)rounds),
+                   rlo, rhi,
+                   (var == F_PASS || var == F_IGNORE_FAR) && found[kind][var] != found[kind][F_PLAIN]
+                       ? "  (different answers!)"
+                       : "");
+            if (var != F_PLAIN) {
+                char name[64];
+                snprintf(name, sizeof name, "filter_%s_%s_over_plain", kind == 2 ? "query" : kind ? "cast" : "ray",
+                         var == F_PASS ? "pass" : var == F_IGNORE_FAR ? "ignore_far" : "ignore_near");
+                bench_figure(name, bench_median(ratio[kind][var], (size_t)rounds));
+            }
+        }
+    printf("(gas of %d circles at 0.3, %d calls per variant a round, %d rounds; the same points in every variant)\n",
+           n, PER, rounds);
+    free(near);
+    free_gas(&q);
+    bench_scene_free(&s);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     int quick = argc > 2 && !strcmp(argv[2], "--quick");
@@ -258,6 +378,8 @@ int main(int argc, char **argv)
         return cmd_walls(quick);
     if (argc >= 2 && !strcmp(argv[1], "periodic"))
         return cmd_periodic(quick);
-    fprintf(stderr, "usage: %s casts|walls|periodic [--quick]\n", argv[0]);
+    if (argc >= 2 && !strcmp(argv[1], "filter"))
+        return cmd_filter(quick);
+    fprintf(stderr, "usage: %s casts|walls|periodic|filter [--quick]\n", argv[0]);
     return 2;
 }

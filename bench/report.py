@@ -1,8 +1,12 @@
 """Writes docs/BENCHMARKS.md and its plots from the results of bench/run.sh.
 
 Usage: python report.py RESULTS_DIR DOCS_DIR COMMAND
+       python report.py --splice RESULTS_DIR DOCS_DIR COMMAND
 RESULTS_DIR holds machine.txt, pair.csv, matrix.csv, headline.txt, scaling.csv, features.csv, idle.csv and
 peers.txt; every number in the page comes from there.
+--splice writes only section 10 (the 1.2 calls: bulk.txt, filter.txt, python_bulk.txt and the run's
+bulk_machine.txt) into the page as it stands, in place of its section 10 or before "How to
+reproduce": for a run of those benchmarks alone, which the section then dates and describes.
 """
 import csv
 import math
@@ -10,10 +14,16 @@ import os
 import re
 import sys
 
-import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+
+def pyplot():
+    # imported only where a plot is drawn: --splice needs no matplotlib
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    return plt
 
 
 def rows(path):
@@ -54,6 +64,7 @@ def peers_table(text):
 
 
 def pareto_plot(matrix, path):
+    plt = pyplot()
     scenes = list(dict.fromkeys(r["scene"] for r in matrix))
     cols = 3
     rows_n = (len(scenes) + cols - 1) // cols
@@ -85,6 +96,7 @@ def pareto_plot(matrix, path):
 
 
 def scaling_plot(scaling, path):
+    plt = pyplot()
     ns = [float(r["n"]) for r in scaling]
     cost = [float(r["cost_ns"]) for r in scaling]
     fig, ax = plt.subplots(figsize=(5, 3.6))
@@ -101,7 +113,112 @@ def scaling_plot(scaling, path):
     plt.close(fig)
 
 
+SECTION_12 = "## 10. The 1.2 calls: the batch add and the query filter"
+
+
+def section_12(res, w, command=None):
+    """Section 10 from bulk.txt, filter.txt and python_bulk.txt (bench_bulk add, bench_queries
+    filter, bench/python_bulk.py); with command, the separate run it came from is named."""
+    bulk, filt, pyb, absent = (read(os.path.join(res, n)) for n in ("bulk.txt", "filter.txt", "python_bulk.txt",
+                                                                     "filter_absent.txt"))
+    if not (bulk or filt or pyb):
+        return
+
+    def block(text):
+        w("```")
+        w("\n".join(l for l in text.strip("\n").splitlines() if not l.startswith("figure ")))
+        w("```")
+        w("")
+    w(SECTION_12)
+    w("")
+    machine = read(os.path.join(res, "bulk_machine.txt")).strip().splitlines()
+    if command and machine:
+        w("Measured apart from the sections above (`%s`), in one session: %s." % (command, "; ".join(machine)))
+        w("")
+    if bulk:
+        w("`bench_bulk add`: N circles (the gas of section 4 at area fraction 0.3, EXACT, its four walls) "
+          "added to an empty world by one `cc_world_add_circles` call and by N `cc_world_add_circle` calls, "
+          "each into fresh memory touched before the clock starts, the two alternating which goes first; "
+          "ns per circle, medians over rounds [spread], the ratio per round. Both end with the same "
+          "`cc_world_hash`. The batch checks every circle before it adds any (the header's Batches), so "
+          "it reads its input twice: in C it is no faster than the single adds (it pays for that second "
+          "pass); what it saves is a binding's crossing of its FFI for every circle (below).")
+        w("")
+        block(bulk)
+    if pyb:
+        w("`bench/python_bulk.py`: the same from Python, `World.add_circles(pos, vel, radius, mass)` from "
+          "numpy arrays (one C call per chunk) against a loop of `World.add_circle` over `Circle` values "
+          "made before the clock starts (the loop's floor), us per circle; the ratio per round, and of "
+          "the minima. Both end with the same `World.hash`. Unlike the C rows, a `World`'s memory (numpy "
+          "zeros: pages mapped at their first write) is first written by the adds, in both rows: at "
+          "N = 1e6 that is part of what `add_circles` costs, as it is for a user.")
+        w("")
+        block(pyb)
+    if filt:
+        w("`bench_queries filter`: casts and disc queries from random points of the gas of 10,000 "
+          "(section 6's calls), each as the 1.1 call (a mask), as its `_filtered` twin with "
+          "`CC_QUERY_FILTER_DEFAULT` (passes everything), with `ignore` a circle far from every path "
+          "(the one farthest from the box's centre: the same answers, so what the filter itself costs), and with `ignore` "
+          "the circle nearest the start (a cue ball's own cast: the cast goes on past that circle to the "
+          "next one, a longer search and another answer), the same points in every variant, the "
+          "variants' order rotated each round; ratios to the 1.1 call per round. The 1.1 calls are the "
+          "`_filtered` ones with {mask, -1}, so a program that sets no filter pays nothing for it.")
+        w("")
+        block(filt)
+    if absent:
+        w("`bench/filter_absent.sh` (by hand: it needs a build from before the filter): the 1.1 calls "
+          "(`bench_queries casts --quick`, the same points) of main before the filter's merge (73eb23c) "
+          "against this build's, the two programs alternating, the ratio per round: what the filter "
+          "costs a program that sets none.")
+        w("")
+        block(absent)
+
+
+def how_to(w):
+    w("## How to reproduce")
+    w("")
+    w("```sh")
+    w("bench/run.sh            # everything, writes this page (several minutes)")
+    w("bench/run.sh --quick    # the headline figures only, under a minute once built")
+    w("build-bench/bench/bench_pair --help; build-bench/bench/bench_world matrix|headline|scaling|features")
+    w("build-bench/bench/bench_pair_rolling dump|time; bench/pooltool_rolling.py (section 8)")
+    w("build-bench/bench/bench_queries casts|walls|filter")
+    w("build-bench/bench/bench_bulk add [--quick]   # section 10, the batch add")
+    w("bench/filter_absent.sh OLD/bench/bench_queries build-bench/bench/bench_queries   # section 10, by hand")
+    w("build-bench/bench/bench_idle [--quick]   # section 5, a step with nothing to do")
+    w("build-bench/bench/bench_exact [--quick] [--max-n N] [--only disks|scaling|scenes|d3|d7|gas|big]   # section 9")
+    w("CIRCLECOLLIDE_LIBRARY=build-bench/src/libcirclecollide.so PYTHONPATH=bindings/python/src \\")
+    w("  build-bench/venv/bin/python bench/python_path.py build-bench/bench   # section 7")
+    w("CIRCLECOLLIDE_LIBRARY=build-bench/src/libcirclecollide.so PYTHONPATH=bindings/python/src \\")
+    w("  build-bench/venv/bin/python bench/python_bulk.py   # section 10")
+    w("```")
+    w("")
+
+
+def splice(res, docs, command):
+    path = os.path.join(docs, "BENCHMARKS.md")
+    page = read(path)
+    L = []
+    section_12(res, L.append, command)
+    text = "\n".join(L) + "\n"
+    start = page.find(SECTION_12)
+    if start >= 0:
+        end = page.find("\n## ", start + len(SECTION_12))
+        page = page[:start] + text + page[end + 1:]
+    else:
+        at = page.find("## How to reproduce")
+        page = page[:at] + text + page[at:]
+    H = []
+    how_to(H.append)
+    page = page[:page.find("## How to reproduce")] + "\n".join(H)
+    with open(path, "w") as f:
+        f.write(page)
+
+
 def main():
+    if sys.argv[1] == "--splice":
+        splice(*sys.argv[2:5])
+        return
     res, docs, command = sys.argv[1:4]
     machine = read(os.path.join(res, "machine.txt")).strip().splitlines()
     pair = rows(os.path.join(res, "pair.csv"))
@@ -246,6 +363,8 @@ def main():
             w(head)
             w("```")
             w("")
+
+    notes("walls_notes.md")  # the hand-kept table of escapes against speed and the jam, after section 2
 
     # ---- scaling
     if scaling:
@@ -409,20 +528,9 @@ def main():
         w("")
     notes("exact_notes.md")
 
-    w("## How to reproduce")
-    w("")
-    w("```sh")
-    w("bench/run.sh            # everything, writes this page (several minutes)")
-    w("bench/run.sh --quick    # the headline figures only, under a minute once built")
-    w("build-bench/bench/bench_pair --help; build-bench/bench/bench_world matrix|headline|scaling|features")
-    w("build-bench/bench/bench_pair_rolling dump|time; bench/pooltool_rolling.py (section 8)")
-    w("build-bench/bench/bench_queries casts|walls")
-    w("build-bench/bench/bench_idle [--quick]   # section 5, a step with nothing to do")
-    w("build-bench/bench/bench_exact [--quick] [--max-n N] [--only disks|scaling|scenes|d3|d7|gas|big]   # section 9")
-    w("CIRCLECOLLIDE_LIBRARY=build-bench/src/libcirclecollide.so PYTHONPATH=bindings/python/src \\")
-    w("  build-bench/venv/bin/python bench/python_path.py build-bench/bench   # section 7")
-    w("```")
-    w("")
+    section_12(res, w)
+
+    how_to(w)
     with open(os.path.join(docs, "BENCHMARKS.md"), "w") as f:
         f.write("\n".join(L))
 

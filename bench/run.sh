@@ -34,7 +34,7 @@ fi
 
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$b2d" \
   -DCC_BUILD_TESTS=OFF -DCC_BUILD_DEMO=OFF >>"$log" 2>&1
-targets=(bench_pair bench_pair_rolling bench_world bench_idle bench_queries bench_exact)
+targets=(bench_pair bench_pair_rolling bench_world bench_idle bench_queries bench_exact bench_bulk)
 grep -q "Box2D found" "$log" && targets+=(bench_box2d_world)
 cmake --build "$build" -j"$jobs" --target "${targets[@]}" >>"$log" 2>&1 || {
   tail -30 "$log" >&2
@@ -51,6 +51,8 @@ if [ $quick = 1 ]; then
   "$bin/bench_queries" casts --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" walls --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" periodic --quick | tee -a "$log" | grep '^figure '
+  "$bin/bench_queries" filter --quick | tee -a "$log" | grep '^figure '
+  "$bin/bench_bulk" add --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_exact" --quick | tee -a "$log" | grep '^figure '
   echo "(details: $log)"
   exit 0
@@ -96,6 +98,9 @@ echo "== queries and walls at scale" | tee -a "$log"
 "$bin/bench_queries" casts | tee "$out/casts.txt"
 "$bin/bench_queries" walls | tee "$out/walls.txt"
 "$bin/bench_queries" periodic | tee "$out/periodic_casts.txt"
+echo "== the 1.2 calls: the batch add against single adds, the query filter against the 1.1 calls" | tee -a "$log"
+"$bin/bench_bulk" add | tee "$out/bulk.txt"
+"$bin/bench_queries" filter | tee "$out/filter.txt"
 
 echo "== EXACT at research speed (issue 16)" | tee -a "$log"
 "$bin/bench_exact" | tee "$out/exact.txt"
@@ -118,6 +123,9 @@ cmake --build "$build" -j"$jobs" --target circlecollide >>"$log" 2>&1
 CIRCLECOLLIDE_LIBRARY=$(ls "$build"/src/libcirclecollide.so* | head -1) PYTHONPATH=$root/bindings/python/src \
   "$venv/bin/python" "$root/bench/python_path.py" "$bin" 2>>"$log" | tee "$out/python_path.txt" ||
   echo "bench: the Python path did not run (see $log)" >&2
+CIRCLECOLLIDE_LIBRARY=$(ls "$build"/src/libcirclecollide.so* | head -1) PYTHONPATH=$root/bindings/python/src \
+  "$venv/bin/python" "$root/bench/python_bulk.py" 2>>"$log" | tee "$out/python_bulk.txt" ||
+  echo "bench: the Python batch add did not run (see $log)" >&2
 
 echo "== rolling pair: cc_sweep_rolling, cc_sweep, textbook quartic, pooltool (same pairs, same run)" | tee -a "$log"
 "$bin/bench_pair_rolling" dump 20000 "$out/pool_pairs.bin" >>"$log"

@@ -23,5 +23,13 @@ if(CC_BUILD_BENCH AND EXISTS ${PROJECT_SOURCE_DIR}/bench/CMakeLists.txt)
     add_test(NAME bench_queries_walls_tiny COMMAND bench_queries walls --quick)
     set_tests_properties(bench_queries_walls_tiny PROPERTIES LABELS bench TIMEOUT 120
       PASS_REGULAR_EXPRESSION "walls_10000_cost_ratio " FAIL_REGULAR_EXPRESSION "different collisions")
+    # the 1.2 calls at their quick sizes: they run, the batch add's world is the single adds'
+    # (the same hash), and the filter that passes everything finds what the 1.1 calls find
+    add_test(NAME bench_bulk_tiny COMMAND bench_bulk add --quick)
+    set_tests_properties(bench_bulk_tiny PROPERTIES LABELS bench TIMEOUT 120
+      PASS_REGULAR_EXPRESSION "figure add_circles_over_singles_n10000 " FAIL_REGULAR_EXPRESSION "worlds differ")
+    add_test(NAME bench_queries_filter_tiny COMMAND bench_queries filter --quick)
+    set_tests_properties(bench_queries_filter_tiny PROPERTIES LABELS bench TIMEOUT 120
+      PASS_REGULAR_EXPRESSION "figure filter_query_ignore_near_over_plain " FAIL_REGULAR_EXPRESSION "different answers")
   endif()
 endif()

@@ -26,7 +26,7 @@ static int g_verbose;
 
 static void run(dw_pairing pairing, const char *name, unsigned long scenes, double min_share)
 {
-    unsigned long ends[DW_END_COUNT] = {0}, events = 0, sensed = 0, calls = 0, steps = 0, s;
+    unsigned long ends[DW_END_COUNT] = {0}, events = 0, sensed = 0, calls = 0, steps = 0, batches = 0, refused = 0, s;
     double worst_dt = 0.0, worst_dp = 0.0;
     char first[600] = "";
     for (s = 0; s < scenes; s++) {
@@ -36,6 +36,8 @@ static void run(dw_pairing pairing, const char *name, unsigned long scenes, doub
         events += r.events_compared;
         sensed += r.sensor_events_compared;
         calls += r.calls;
+        batches += r.batches;
+        refused += r.batches_refused;
         steps += r.steps_compared;
         worst_dt = r.worst_dt > worst_dt ? r.worst_dt : worst_dt;
         worst_dp = r.worst_dp > worst_dp ? r.worst_dp : worst_dp;
@@ -48,9 +50,10 @@ static void run(dw_pairing pairing, const char *name, unsigned long scenes, doub
                    : r.end == DW_END_JAMMED   ? "jammed"
                                               : "FAILED", r.why);
     }
-    printf("%s: %lu scenes, %lu calls, %lu steps, %lu contact events and %lu sensor events compared; ended: done %lu, at a "
-           "doubt %lu, diverged %lu, jammed %lu, failed %lu; worst |dt| %.3g T, worst |dp| %.3g L\n",
-           name, scenes, calls, steps, events, sensed, ends[DW_END_DONE], ends[DW_END_TIE], ends[DW_END_DIVERGED],
+    printf("%s: %lu scenes, %lu calls (%lu batch adds, %lu of them refused), %lu steps, %lu contact events and %lu "
+           "sensor events compared; ended: done %lu, at a doubt %lu, diverged %lu, jammed %lu, failed %lu; worst |dt| "
+           "%.3g T, worst |dp| %.3g L\n",
+           name, scenes, calls, batches, refused, steps, events, sensed, ends[DW_END_DONE], ends[DW_END_TIE], ends[DW_END_DIVERGED],
            ends[DW_END_JAMMED], ends[DW_END_FAILED], worst_dt, worst_dp);
     TEST_ASSERT_EQUAL_INT_MESSAGE(0, (int)ends[DW_END_FAILED], first);
     /* the comparison must not be vacuous: most of the event budget is compared (chaos ends some

@@ -76,16 +76,20 @@ int web_segment_restitution(cc_world *w, int id, double restitution)
     return cc_world_set_segment_props(w, id, &p);
 }
 
-/* ---- the aiming line: cc_world_cast_circle takes its two vectors by value ---- */
+/* ---- the aiming line: cc_world_cast_circle_filtered takes its two vectors by value, and the
+ * filter (its mask, and the circle it leaves out: the cue ball casting from where it is) ---- */
 int web_cast_circle(const cc_world *w, double px, double py, double radius, double dx, double dy, uint32_t mask,
-                    cc_cast_hit *out)
+                    int ignore, cc_cast_hit *out)
 {
     cc_vec2 p, d;
+    cc_query_filter f = CC_QUERY_FILTER_DEFAULT;
     p.x = px;
     p.y = py;
     d.x = dx;
     d.y = dy;
-    return cc_world_cast_circle(w, p, radius, d, mask, out);
+    f.mask = mask;
+    f.ignore = ignore;
+    return cc_world_cast_circle_filtered(w, p, radius, d, &f, out);
 }
 
 /* the sizes the page lays its arrays out with: 0 cc_circle, 1 cc_cast_hit */

@@ -21,7 +21,7 @@ WEB_EXPORT int web_circle_sensor(cc_world *w, int id);
 WEB_EXPORT int web_circle_category(cc_world *w, int id, uint32_t category);
 WEB_EXPORT int web_segment_restitution(cc_world *w, int id, double restitution);
 WEB_EXPORT int web_cast_circle(const cc_world *w, double px, double py, double radius, double dx, double dy,
-                               uint32_t mask, cc_cast_hit *out);
+                               uint32_t mask, int ignore, cc_cast_hit *out);
 WEB_EXPORT size_t web_sizeof(int what);
 
 /* the world's callbacks while a def made with callbacks is in use */

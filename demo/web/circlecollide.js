@@ -199,10 +199,12 @@ export class World {
     return out;
   }
 
-  // cc_world_cast_circle: null for a miss, else {circle, segment, t, px, py, nx, ny, overlap}
-  cast(px, py, radius, dx, dy, mask = 0xffffffff) {
-    const r = this.check("cc_world_cast_circle",
-      this.x.web_cast_circle(this.w, px, py, radius, dx, dy, mask >>> 0, this.hitPtr));
+  // cc_world_cast_circle_filtered: null for a miss, else {circle, segment, t, px, py, nx, ny,
+  // overlap}; the filter's mask (every category by default) and ignore, the id of a circle the
+  // cast leaves out (-1: none), as the cue ball's own aiming cast needs
+  cast(px, py, radius, dx, dy, { mask = 0xffffffff, ignore = -1 } = {}) {
+    const r = this.check("cc_world_cast_circle_filtered",
+      this.x.web_cast_circle(this.w, px, py, radius, dx, dy, mask >>> 0, ignore | 0, this.hitPtr));
     if (r === 0) return null;
     const ints = new Int32Array(this.x.memory.buffer, this.hitPtr, 2);
     const v = this.f64(this.hitPtr + 8, 5);

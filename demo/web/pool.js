@@ -2,8 +2,8 @@
 // The library does all of the physics: the cloth is the world's rolling deceleration, balls have
 // restitution 0.95 and cushions 0.75 (CC_MIX_MIN), each pocket is an immovable sensor circle of
 // radius (pocket radius - ball radius) whose begin event means the ball's centre is over the hole,
-// and the aiming line and ghost ball come from cc_world_cast_circle (the object ball leaves along
-// the cast's contact normal). Units: metres, seconds, kilograms.
+// and the aiming line and ghost ball come from cc_world_cast_circle_filtered, a cast that leaves
+// the cue ball itself out (the object ball leaves along the cast's contact normal). Units: metres, seconds, kilograms.
 import { load } from "./circlecollide.js";
 
 const L = 2.54, W = 1.27; // playing area between the cushion noses
@@ -16,7 +16,6 @@ const MARGIN = 0.13; // rails around the cloth, drawn
 const DT = 1 / 60; // one world step per frame (scaled by ?steps=N)
 const MAX_SPEED = 9; // a firm break is 8 m/s
 const MAX_PULL = 0.45; // metres of pull-back for the full speed
-const CUE_CATEGORY = 2; // the cue ball's filter category: the aiming cast leaves it out (mask 1)
 
 const POCKETS = [[0, 0], [L, 0], [0, W], [L, W], [L / 2, -SIDE_DROP], [L / 2, W + SIDE_DROP]];
 const CUSHIONS = [
@@ -61,6 +60,7 @@ function newGame() {
     pullFrom: null,
     pull: 0, // the pull's component against the aim, metres (0 .. MAX_PULL)
     note: "", // why the last release shot nothing, until the next press
+    aimHit: null, // the aiming cast as last drawn
     lastShot: null, // {speed, x, y}: the last shot's speed and direction
     steps: 0,
     movedBalls: 0,
@@ -118,7 +118,6 @@ function placeCue() {
   }
   game.cue = world.addCircle({ x, y, radius: R, mass: M });
   world.circleRestitution(game.cue, BALL_E);
-  world.circleCategory(game.cue, CUE_CATEGORY);
   game.numbers.set(game.cue, 0);
 }
 
@@ -301,7 +300,9 @@ function drawBall(c, n) {
 
 function drawAim(cue) {
   const reach = 3.2; // longer than the table's diagonal
-  const hit = world.cast(cue.x, cue.y, R, game.aim.x * reach, game.aim.y * reach, 1);
+  // the cue ball casts from where it is: the filter leaves it out (else it overlaps itself)
+  const hit = world.cast(cue.x, cue.y, R, game.aim.x * reach, game.aim.y * reach, { ignore: game.cue });
+  game.aimHit = hit;
   const t = hit ? hit.t : 1;
   const gx = cue.x + game.aim.x * reach * t, gy = cue.y + game.aim.y * reach * t;
   line(cue.x, cue.y, gx, gy, "rgba(255,255,255,0.75)", 1.5, [6, 5]);
@@ -414,6 +415,8 @@ async function main() {
     pull: () => game.state !== "pull" ? null : Object.assign(pullOf(game.mouse || game.pullFrom),
       { aim: { ...game.aim } }),
     lastShot: () => game.lastShot,
+    // the aiming cast as last drawn: null (a miss) or {circle, segment, t, ..., overlap}
+    aimHit: () => game.aimHit,
     fouls: () => game.fouls,
     worldBytes: () => world.bytes,
     powerText: () => powerEl.textContent,

@@ -46,3 +46,30 @@ echo "sdist: $(basename "$sdist"), $(grep -c /csrc/ "$out/dist/contents.txt") fi
 python3 -m venv "$out/sdist-venv"
 "$out/sdist-venv/bin/python" -m pip install -q --disable-pip-version-check "$sdist"
 "$out/sdist-venv/bin/python" "$root/bindings/python/tests/smoke.py"
+
+# pip's install from a git URL of the checkout, as a user's `pip install
+# "git+https://...#subdirectory=bindings/python"` makes it: pip clones the repository (its HEAD:
+# what is committed), builds the wheel from the subdirectory against the sources two folders up
+# in that clone, and installs it into a throwaway venv; then the smoke test (a tiny world) from
+# outside the source tree, and pip's record says it came from this commit by git. The build
+# backend and numpy come from the registry first (pip's cache holds them after the venv above):
+# --no-build-isolation, so that the build itself needs nothing from the network.
+t0=$(date +%s)
+rm -rf "$out/git-venv"
+python3 -m venv "$out/git-venv"
+"$out/git-venv/bin/python" -m pip install -q --disable-pip-version-check scikit-build-core numpy
+CMAKE_BUILD_PARALLEL_LEVEL=${CC_JOBS:-2} "$out/git-venv/bin/python" -m pip install -q --disable-pip-version-check \
+  --no-build-isolation --no-deps "git+file://$root#subdirectory=bindings/python"
+"$out/git-venv/bin/python" "$root/bindings/python/tests/smoke.py"
+"$out/git-venv/bin/python" - "$(git -C "$root" rev-parse HEAD)" <<'PY'
+import json, sys
+from importlib import metadata
+d = metadata.distribution("circlecollide")
+url = json.loads(d.read_text("direct_url.json"))
+assert url.get("vcs_info", {}).get("vcs") == "git" and url["vcs_info"]["commit_id"] == sys.argv[1], url
+assert url.get("subdirectory") == "bindings/python", url
+import circlecollide
+assert "git-venv" in circlecollide.__file__, circlecollide.__file__
+print("git install ok: %s at commit %s" % (url["url"], url["vcs_info"]["commit_id"][:12]))
+PY
+echo "50-python: the install from a git URL took $(( $(date +%s) - t0 )) s"

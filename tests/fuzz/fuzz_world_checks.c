@@ -30,7 +30,10 @@
  * generous 1e-9 of the size of the numbers involved (the header promises 1e-13 near the
  * origin); kinetic energy never grows across a step (1e-9 relative) unless an immovable circle
  * moves; a world copied with memcpy mid-sequence gives the same results and hash on the next
- * call as the original. The callbacks check their events, that they fire only from the calls
+ * call as the original; a batch add (cc_world_add_circles) of k circles ends as k single adds
+ * on a copy of the world do (ids, callbacks' events bit for bit, hash) or refuses as the first
+ * refused single add does and changes nothing; cc_world_get_unwrapped_all gives what
+ * cc_world_get_unwrapped gives for each live circle. The callbacks check their events, that they fire only from the calls
  * the header lists, and try every mutator from inside: each must return CC_ERR_BUSY (CC_ERR_INVALID
  * in a world made from a 1.0 or 1.1 def: the header's Results) and change nothing (the hash). */
 #include "fuzz_world_checks.h"
@@ -151,6 +154,8 @@ typedef struct model {
     double restitution, rest_speed, cell_size, decel, period[2];
     uint64_t max_events;
     int has_contact_cb, has_sensor_cb;
+    uint64_t evhash; /* the callbacks' events of the call running, folded in order (FNV-1a) */
+    int nev;
     int live[MAXC + 1];
     double radius[MAXC + 1], mass[MAXC + 1];
     cc_circle_props props[MAXC + 1];
@@ -236,8 +241,12 @@ static double wrapd(const model *m, int k, double d)
 enum op {
     OP_ADD, OP_REMOVE, OP_SET, OP_GET, OP_ADD_SEG, OP_GET_SEG, OP_SET_PROPS, OP_GET_PROPS,
     OP_SET_SEGPROPS, OP_GET_SEGPROPS, OP_STEP, OP_STEP2, OP_CAST, OP_QUERY_CIRCLE, OP_QUERY_BOX,
-    OP_HASH, OP_STATS, OP_UNWRAPPED, OP_GET_CIRCLES, OP_COPY, OP_STEP_SMALL, OP_ADD2, OP_COUNT
+    OP_HASH, OP_STATS, OP_UNWRAPPED, OP_GET_CIRCLES, OP_COPY, OP_STEP_SMALL, OP_ADD2, OP_ADD_BATCH,
+    OP_UNWRAPPED_ALL, OP_COUNT
 };
+
+/* an add: one circle (OP_ADD, OP_ADD2) or a batch of them (cc_world_add_circles) */
+static int is_add(int op) { return op == OP_ADD || op == OP_ADD2 || op == OP_ADD_BATCH; }
 
 /* From inside a callback: every mutator must be refused and change nothing. */
 static void try_mutators(model *m, int id)
@@ -252,6 +261,11 @@ static void try_mutators(model *m, int id)
     if (m->ncb > 8)
         return; /* enough for one call: the first events of each call are tried */
     REQUIRE(m, cc_world_add_circle(w, &c) == m->busy_code, "add_circle from a callback not refused");
+    {
+        int one = -9, at = 5;
+        REQUIRE(m, cc_world_add_circles(w, &c, 1, &one, &at) == m->busy_code && at == -1 && one == -9,
+                "add_circles from a callback not refused with no circle at fault (failed -1, ids untouched)");
+    }
     REQUIRE(m, cc_world_add_segment(w, &s) == m->busy_code, "add_segment from a callback not refused");
     REQUIRE(m, cc_world_step(w, 0.0) == m->busy_code, "step(0) from a callback not refused");
     REQUIRE(m, cc_world_step(w, 1.0) == m->busy_code, "step(1) from a callback not refused");
@@ -277,6 +291,17 @@ static void try_mutators(model *m, int id)
     fuzz_world_counted.refused++;
 }
 
+static void fold(model *m, const void *p, size_t n)
+{
+    const unsigned char *b = (const unsigned char *)p;
+    size_t i;
+    for (i = 0; i < n; i++)
+        m->evhash = (m->evhash ^ b[i]) * UINT64_C(0x100000001B3);
+}
+
+static void fold_int(model *m, int v) { fold(m, &v, sizeof v); }
+static void fold_double(model *m, double v) { fold(m, &v, sizeof v); }
+
 static void on_contact(const cc_contact_event *e, void *user)
 {
     model *m = g_cur;
@@ -285,11 +310,15 @@ static void on_contact(const cc_contact_event *e, void *user)
     REQUIRE(m, user == &g_user, "the contact callback got another user pointer");
     REQUIRE(m, m->has_contact_cb, "on_contact called though the def had none");
     REQUIRE(m, m->op == OP_STEP || m->op == OP_STEP2 || m->op == OP_STEP_SMALL || m->op == OP_SET_PROPS ||
-                   ((m->op == OP_ADD || m->op == OP_ADD2 || m->op == OP_SET) && m->mode == CC_MODE_EXACT),
+                   ((is_add(m->op) || m->op == OP_SET) && m->mode == CC_MODE_EXACT),
             "on_contact fired from a call the header does not list");
     m->ncb++;
+    m->nev++;
+    fold_int(m, e->a), fold_int(m, e->b), fold_int(m, e->segment), fold_double(m, e->t);
+    fold_double(m, e->point.x), fold_double(m, e->point.y), fold_double(m, e->normal.x);
+    fold_double(m, e->normal.y), fold_double(m, e->impulse);
     fuzz_world_counted.contacts++;
-    REQUIRE(m, live_id(m, e->a) || (m->op == OP_ADD || m->op == OP_ADD2), "contact event: a not a live circle");
+    REQUIRE(m, live_id(m, e->a) || is_add(m->op), "contact event: a not a live circle");
     REQUIRE(m, (e->b >= 0) != (e->segment >= 0), "contact event: neither or both of b and segment");
     REQUIRE(m, e->b < 0 || e->b != e->a, "contact event: a circle against itself");
     REQUIRE(m, e->segment < 0 || e->segment < m->nsegs, "contact event: a wall that does not exist");
@@ -326,9 +355,11 @@ static void on_sensor(const cc_sensor_event *e, void *user)
     REQUIRE(m, user == &g_user, "the sensor callback got another user pointer");
     REQUIRE(m, m->has_sensor_cb, "on_sensor called though the def had none");
     REQUIRE(m, m->op == OP_STEP || m->op == OP_STEP2 || m->op == OP_STEP_SMALL || m->op == OP_SET_PROPS ||
-                   m->op == OP_ADD || m->op == OP_ADD2 || m->op == OP_SET,
+                   is_add(m->op) || m->op == OP_SET,
             "on_sensor fired from a call the header does not list");
     m->ncb++;
+    m->nev++;
+    fold_int(m, -1), fold_int(m, e->sensor), fold_int(m, e->visitor), fold_int(m, e->begin), fold_double(m, e->t);
     fuzz_world_counted.sensors++;
     REQUIRE(m, e->begin == 0 || e->begin == 1, "sensor event: begin not 0 or 1");
     REQUIRE(m, e->sensor != e->visitor, "sensor event: a circle senses itself");
@@ -1370,6 +1401,167 @@ static void do_cast(model *m, reader *r, const snap *s)
 /* Runs one call on m; returns 0 when the input is exhausted. */
 static int one_call(model *m, reader *r, int op);
 
+/* One cc_world_add_circle of c, its result checked against the model's rules (the header's) and
+ * the model updated when it is added. Returns the result. */
+static int add_checked(model *m, const cc_circle *cp)
+{
+    cc_circle c = *cp;
+    int rc, expect = m->nfree > 0 ? m->freestack[m->nfree - 1] : m->next_new;
+    uint64_t h0 = cc_world_hash(m->w);
+    if (getenv("FUZZ_WORLD_TRACE"))
+        fprintf(stderr, "add (%.17g, %.17g) v (%.17g, %.17g) r %.17g m %.17g\n", c.pos.x, c.pos.y, c.vel.x,
+                c.vel.y, c.radius, c.mass);
+    m->placing = c.mass;
+    rc = cc_world_add_circle(m->w, &c);
+    m->placing = 0.0;
+    if (!circle_valid(&c))
+        REQUIRE(m, rc == CC_ERR_INVALID, "add_circle: an invalid circle not INVALID");
+    else if (m->count == m->maxc)
+        REQUIRE(m, rc == CC_ERR_FULL || (!fits_period(m, &c) && rc == m->range_code), "add_circle: not FULL");
+    else if (!fits_period(m, &c))
+        REQUIRE(m, rc == m->range_code, "add_circle: a circle too wide for the period not RANGE");
+    else
+        REQUIRE(m, rc == expect, "add_circle: not the id the header's reuse rule gives");
+    if (rc >= 0) {
+        REQUIRE(m, rc < m->maxc && !m->live[rc], "add_circle: an id out of range or live");
+        if (m->nfree > 0)
+            m->nfree--;
+        else
+            m->next_new++;
+        m->live[rc] = 1, m->count++;
+        m->radius[rc] = c.radius, m->mass[rc] = c.mass;
+        m->props[rc].struct_size = sizeof(cc_circle_props);
+        m->props[rc].restitution = m->restitution;
+        m->props[rc].rolling_decel = m->decel;
+        m->props[rc].category = 1u, m->props[rc].mask = 0xFFFFFFFFu, m->props[rc].sensor = 0;
+    } else
+        REQUIRE(m, cc_world_hash(m->w) == h0, "add_circle: a failed call changed the world");
+    return rc;
+}
+
+#define MAXB 8 /* circles in one batch add */
+
+/* cc_world_add_circles of k circles (the header's Batches): the same k circles are first added
+ * one cc_world_add_circle at a time to a memcpy of the world (each checked as OP_ADD is), then
+ * in one call to the world itself, which must end exactly as the copy did: the same ids, the
+ * same callbacks' events in the same order (bit for bit), the same hash. Or, when a single add
+ * refused circle i, the batch must refuse with that add's code, write i to *failed, write no id,
+ * fire no callback and change nothing. Bad arguments (n < 0, c NULL) are INVALID with failed -1.
+ * Bytes: k (% 9), flags (bit 0: ids_out NULL, bit 1: failed NULL, bit 2: mostly valid circles
+ * near the others, as OP_ADD2; bits 5-7 = 7: n = -1, = 6: c NULL), then the k circles. */
+static void do_add_batch(model *m, reader *r, uint64_t h0)
+{
+    unsigned kb = byte(r), fl = byte(r);
+    int k = (int)(kb % (MAXB + 1)), n = k, i, rc, at = -77, fail_at = -1, fail_code = 0, bad = 0;
+    int ids[MAXB + 2], single[MAXB];
+    cc_circle c[MAXB];
+    double heavy = 0.0;
+    uint64_t h_single, ev_single;
+    int nev_single;
+    unsigned char *copy;
+    cc_world *orig = m->w;
+    model keep;
+    for (i = 0; i < k; i++) {
+        c[i] = read_circle(r);
+        if (fl & 4u)
+            c[i].radius = fabs(c[i].radius) > 0.0 && isfinite(c[i].radius) ? fabs(c[i].radius) : 0.5,
+            c[i].mass = c[i].mass > 0.0 ? c[i].mass : 1.0;
+    }
+    for (i = 0; i < k; i++)
+        if (place_ub(m, &c[i]))
+            return; /* D2 */
+    for (i = 0; i < k; i++)
+        if (!isnan(c[i].mass) && c[i].mass > heavy)
+            heavy = c[i].mass;
+    if ((fl >> 5) == 7u)
+        n = -1 - (int)(kb % 3u), bad = 1;
+    else if ((fl >> 5) == 6u && k > 0)
+        bad = 1;
+    keep = *m;
+    h_single = h0, ev_single = UINT64_C(0xCBF29CE484222325), nev_single = 0;
+    if (!bad) { /* the singles, on a copy */
+        copy = (unsigned char *)malloc(m->bytes);
+        if (copy == NULL)
+            return;
+        memcpy(copy, m->block + GUARD, m->bytes);
+        m->w = (cc_world *)(void *)copy;
+        m->evhash = UINT64_C(0xCBF29CE484222325), m->nev = 0, m->ncb = 0;
+        for (i = 0; i < k; i++) {
+            single[i] = add_checked(m, &c[i]);
+            if (single[i] < 0) {
+                fail_at = i, fail_code = single[i];
+                break;
+            }
+        }
+        h_single = cc_world_hash(m->w), ev_single = m->evhash, nev_single = m->nev;
+        m->w = orig;
+        free(copy);
+        if (fail_at >= 0) { /* the model as it was: the batch must add none */
+            keep.huge = m->huge, keep.rmin = m->rmin;
+            *m = keep;
+        }
+    }
+    for (i = 0; i < MAXB + 2; i++)
+        ids[i] = -77;
+    m->evhash = UINT64_C(0xCBF29CE484222325), m->nev = 0, m->ncb = 0;
+    m->placing = heavy;
+    if (getenv("FUZZ_WORLD_TRACE"))
+        fprintf(stderr, "add_circles n %d%s%s%s\n", n, (fl >> 5) == 6u && k > 0 ? " c NULL" : "",
+                fl & 1u ? " ids NULL" : "", fl & 2u ? " failed NULL" : "");
+    rc = cc_world_add_circles(m->w, (fl >> 5) == 6u && k > 0 ? NULL : c, n, fl & 1u ? NULL : ids, fl & 2u ? NULL : &at);
+    m->placing = 0.0;
+    if (getenv("FUZZ_WORLD_TRACE"))
+        fprintf(stderr, "add_circles: %d (failed %d; the singles: %d at %d)\n", rc, at, fail_code, fail_at);
+    for (i = rc == k && !bad && fail_at < 0 ? k : 0; i < MAXB + 2; i++)
+        REQUIRE(m, ids[i] == -77, "add_circles: wrote an id it was not to (beyond n, or on an error)");
+    if (bad || fail_at >= 0) {
+        REQUIRE(m, rc == (bad ? CC_ERR_INVALID : fail_code),
+                bad ? "add_circles: n < 0 or c NULL not INVALID"
+                    : "add_circles: not the code of the first circle cc_world_add_circle refuses");
+        REQUIRE(m, (fl & 2u) || at == (bad ? -1 : fail_at), "add_circles: *failed not the index the single adds refused");
+        REQUIRE(m, cc_world_hash(m->w) == h0, "add_circles: a refused batch changed the world (hash)");
+        REQUIRE(m, m->nev == 0, "add_circles: a refused batch fired a callback");
+        return;
+    }
+    REQUIRE(m, rc == k, "add_circles: not n where every single add was accepted");
+    REQUIRE(m, at == -77, "add_circles: a success wrote *failed");
+    if (!(fl & 1u))
+        for (i = 0; i < k; i++)
+            REQUIRE(m, ids[i] == single[i], "add_circles: ids not those of the single adds");
+    REQUIRE(m, m->nev == nev_single && m->evhash == ev_single,
+            "add_circles: the callbacks' events differ from the single adds' (count, order or bits)");
+    REQUIRE(m, cc_world_hash(m->w) == h_single, "add_circles: the world differs from the single adds' (hash)");
+}
+
+/* cc_world_get_unwrapped_all: the live circles in id order, as cc_world_get_unwrapped gives
+ * each, up to capacity, nothing written beyond (bytes: capacity - 1 (% 44), which of ids/out NULL). */
+static void do_unwrapped_all(model *m, reader *r, const snap *s)
+{
+    int cap = (int)(byte(r) % 44u) - 1, which = (int)(byte(r) % 4u), n, i;
+    int ids[MAXC + 4];
+    cc_vec2 u[MAXC + 4];
+    memset(ids, (int)UNTOUCHED, sizeof ids);
+    memset(u, (int)UNTOUCHED, sizeof u);
+    n = cc_world_get_unwrapped_all(m->w, which & 1 ? NULL : ids, which & 2 ? NULL : u, cap);
+    if (cap < 0) {
+        REQUIRE(m, n == CC_ERR_INVALID, "get_unwrapped_all: a negative capacity not INVALID");
+        n = 0, cap = 0;
+    } else
+        REQUIRE(m, n == m->count, "get_unwrapped_all: not the number of live circles");
+    REQUIRE(m, bytes_untouched((const unsigned char *)ids, (size_t)(n < cap ? n : cap) * sizeof(int), sizeof ids) &&
+                   bytes_untouched((const unsigned char *)u, (size_t)(n < cap ? n : cap) * sizeof(cc_vec2), sizeof u),
+            "get_unwrapped_all: wrote beyond the count or the capacity");
+    for (i = 0; i < n && i < cap; i++) {
+        cc_vec2 one;
+        REQUIRE(m, cc_world_get_unwrapped(m->w, s->ids[i], &one) == CC_OK, "get_unwrapped of a live id");
+        if (!(which & 1))
+            REQUIRE(m, ids[i] == s->ids[i], "get_unwrapped_all: ids not the live ones in increasing order");
+        if (!(which & 2))
+            REQUIRE(m, memcmp(&u[i], &one, sizeof one) == 0, "get_unwrapped_all: not what get_unwrapped gives");
+    }
+}
+
+
 static void copy_test(model *m, reader *r)
 {
     /* the world copied (memcpy) to other memory works identically: the next call on both */
@@ -1446,43 +1638,16 @@ static int one_call(model *m, reader *r, int op)
     case OP_ADD:
     case OP_ADD2: {
         cc_circle c = read_circle(r);
-        int expect;
         if (op == OP_ADD2) /* mostly valid: a circle near the others, for collisions */
             c.radius = fabs(c.radius) > 0.0 && isfinite(c.radius) ? fabs(c.radius) : 0.5,
             c.mass = c.mass > 0.0 ? c.mass : 1.0;
-        expect = m->nfree > 0 ? m->freestack[m->nfree - 1] : m->next_new;
         if (place_ub(m, &c))
             break; /* D2 */
-        if (getenv("FUZZ_WORLD_TRACE"))
-            fprintf(stderr, "add (%.17g, %.17g) v (%.17g, %.17g) r %.17g m %.17g\n", c.pos.x, c.pos.y, c.vel.x,
-                    c.vel.y, c.radius, c.mass);
-        m->placing = c.mass;
-        rc = cc_world_add_circle(m->w, &c);
-        m->placing = 0.0;
-        if (!circle_valid(&c))
-            REQUIRE(m, rc == CC_ERR_INVALID, "add_circle: an invalid circle not INVALID");
-        else if (m->count == m->maxc)
-            REQUIRE(m, rc == CC_ERR_FULL || (!fits_period(m, &c) && rc == m->range_code), "add_circle: not FULL");
-        else if (!fits_period(m, &c))
-            REQUIRE(m, rc == m->range_code, "add_circle: a circle too wide for the period not RANGE");
-        else
-            REQUIRE(m, rc == expect, "add_circle: not the id the header's reuse rule gives");
-        if (rc >= 0) {
-            REQUIRE(m, rc < m->maxc && !m->live[rc], "add_circle: an id out of range or live");
-            if (m->nfree > 0)
-                m->nfree--;
-            else
-                m->next_new++;
-            m->live[rc] = 1, m->count++;
-            m->radius[rc] = c.radius, m->mass[rc] = c.mass;
-            m->props[rc].struct_size = sizeof(cc_circle_props);
-            m->props[rc].restitution = m->restitution;
-            m->props[rc].rolling_decel = m->decel;
-            m->props[rc].category = 1u, m->props[rc].mask = 0xFFFFFFFFu, m->props[rc].sensor = 0;
-        } else
-            REQUIRE(m, cc_world_hash(m->w) == h0, "add_circle: a failed call changed the world");
+        add_checked(m, &c);
         break;
     }
+    case OP_ADD_BATCH: do_add_batch(m, r, h0); break;
+    case OP_UNWRAPPED_ALL: do_unwrapped_all(m, r, &before); break;
     case OP_REMOVE:
         id = read_id(r, m);
         rc = cc_world_remove_circle(m->w, id);
@@ -1614,7 +1779,7 @@ static int one_call(model *m, reader *r, int op)
     case OP_COPY: copy_test(m, r); return 1;
     default: break;
     }
-    if (op != OP_ADD && op != OP_ADD2 && op != OP_REMOVE && op != OP_SET && op != OP_ADD_SEG &&
+    if (!is_add(op) && op != OP_REMOVE && op != OP_SET && op != OP_ADD_SEG &&
         op != OP_SET_PROPS && op != OP_SET_SEGPROPS && op != OP_STEP && op != OP_STEP2 && op != OP_STEP_SMALL)
         REQUIRE(m, cc_world_hash(m->w) == h0, "a read-only call changed the world (hash)");
     m->op = -1;

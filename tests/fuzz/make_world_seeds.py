@@ -11,7 +11,8 @@ import random
 import sys
 
 (ADD, REMOVE, SET, GET, ADD_SEG, GET_SEG, SET_PROPS, GET_PROPS, SET_SEGPROPS, GET_SEGPROPS, STEP, STEP2,
- CAST, QUERY_CIRCLE, QUERY_BOX, HASH, STATS, UNWRAPPED, GET_CIRCLES, COPY, STEP_SMALL, ADD2) = range(22)
+ CAST, QUERY_CIRCLE, QUERY_BOX, HASH, STATS, UNWRAPPED, GET_CIRCLES, COPY, STEP_SMALL, ADD2, ADD_BATCH,
+ UNWRAPPED_ALL) = range(24)
 ORD = lambda u: 14 + round(u * 241)  # an ordinary value at u in [0, 1] of its kind's range
 HOST = [0, 0]  # a hostile value: 0, then the table index
 
@@ -116,6 +117,26 @@ def main():
                  CAST, 0x80, ORD(0.925), ORD(0.8), ORD(0.7), ORD(0.5), 0]
         seeds["far-images-%d" % mode] = (defbytes(mode, 12, 0, 3 | 4 | 8, 2, cell=1.0, px=8.0, py=8.0) + body + looks
                                           + [STEP, ORD(0.1)] + looks)
+    # the batch calls (1.2: cc_world_add_circles against as many single adds, on a copy of the
+    # world; cc_world_get_unwrapped_all), between the other calls; their own rng, so that the
+    # seeds above stay as they were
+    brng = random.Random(34)
+    for mode in range(3):
+        for name, maxc, maxs, flags, nz, kw in [
+            ("batch-walls", 24, 4, 3, 0x40, {}),
+            ("batch-periodic", 30, 0, 3 | 4 | 8, 2 | 0x40, {"cell": 1.0, "px": 10.0, "py": 10.0}),
+            ("batch-old-def", 12, 2, 3 | 16, 0, {}),
+        ]:
+            body = defbytes(mode, maxc, maxs, flags, nz, **kw)
+            for _ in range(14):
+                k = brng.choice([0, 1, 2, 3, 5, 8])
+                fl = brng.choice([0, 4, 4, 4, 1, 2, 6 << 5, 7 << 5])
+                body += [ADD_BATCH, k, fl]
+                for _ in range(k):
+                    body += circle(brng, 0.6, 0.08 if brng.random() < 0.3 else 0.0)
+                body += [UNWRAPPED_ALL, brng.randrange(256), brng.randrange(4)]
+                body += calls(brng, 4, maxc, 0.0, 0.6)
+            seeds["%s-%d" % (name, mode)] = body
     for name, b in sorted(seeds.items()):
         with open(os.path.join(d, "seed-" + name), "wb") as f:
             f.write(bytes(b))

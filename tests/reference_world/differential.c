@@ -12,6 +12,7 @@
 
 #define DW_LOG_MAX 64      /* contact events compared per call (a step, an add, a set) */
 #define DW_MAX_CIRCLES 128 /* circles in a scene, at most */
+#define DW_BATCH 4         /* circles in one batch add (cc_world_add_circles), at most */
 
 /* What rounding may explain (see the comparison below). Times and positions are compared
  * relative to the scene's scales: T = L / V, L = its extent, V = its largest speed. */
@@ -64,6 +65,7 @@ typedef struct dw_sim {
     dw_event log[DW_LOG_MAX];
     int n_sensed;   /* sensor events of the current call (the first DW_LOG_MAX are kept) */
     cc_sensor_event sensed[DW_LOG_MAX];
+    int batch_ids[DW_BATCH], batch_failed; /* a batch add's ids and *failed (-77: unwritten) */
 } dw_sim;
 
 static int sim_get(const dw_sim *s, int *ids, cc_circle *c, int cap)
@@ -137,6 +139,10 @@ typedef struct dw_scene {
     double L, T, J;      /* scales: length, time, impulse */
     double period[2];    /* a periodic scene: its periods (0: open) */
     int props;           /* the scene sets per-body properties */
+    int batch;           /* the scene adds its circles in batches (cc_world_add_circles) */
+    int to_place;        /* circles of the first round still to place (batch scenes) */
+    int may_fill;        /* a batch may find the world full (not when the two worlds' capacities
+                            differ: all pairs against the grid) */
     double decel;        /* a rolling scene: its typical deceleration (0: none) */
     cc_segment seg[64];
     int n_seg;
@@ -209,7 +215,7 @@ static cc_circle random_circle(dw_scene *sc)
 /* A circle placed where it overlaps nothing, or (when `onto`) exactly one circle and no wall:
  * overlaps that the world pushes apart, isolated so that the order of the pushes is not in
  * question. Returns 0 when no place was found. */
-static int place(dw_scene *sc, const dw_sim *sim, int self, int onto, cc_circle *out)
+static int place(dw_scene *sc, const dw_sim *sim, int self, int onto, cc_circle *out, cc_circle *pushed)
 {
     int tries, n_over, which = -1;
     for (tries = 0; tries < 200; tries++) {
@@ -234,6 +240,8 @@ static int place(dw_scene *sc, const dw_sim *sim, int self, int onto, cc_circle 
                 if (cc_separate(&pa, &pb) == CC_OVERLAP && !overlaps(sc, sim, &pa, self, ids[k], &n_over, &which) &&
                     !overlaps(sc, sim, &pb, self, ids[k], &n_over, &which)) {
                     *out = c;
+                    if (pushed != NULL)
+                        pushed[0] = pa, pushed[1] = pb;
                     return 1;
                 }
             }
@@ -241,6 +249,8 @@ static int place(dw_scene *sc, const dw_sim *sim, int self, int onto, cc_circle 
         }
         if (!overlaps(sc, sim, &c, self, self, &n_over, &which)) {
             *out = c;
+            if (pushed != NULL)
+                pushed[0] = pushed[1] = c;
             return 1;
         }
     }
@@ -483,12 +493,14 @@ static void resync(dw_sim *ref, const dw_sim *from)
     ref->r->now = cc_world_time(from->w);
 }
 
-enum { CALL_ADD, CALL_REMOVE, CALL_SET, CALL_PROPS, CALL_SEGMENT_PROPS, CALL_STEP };
-static const char *const call_name[] = {"add", "remove", "set", "props", "segment props", "step"};
+enum { CALL_ADD, CALL_REMOVE, CALL_SET, CALL_PROPS, CALL_SEGMENT_PROPS, CALL_STEP, CALL_ADD_BATCH };
+static const char *const call_name[] = {"add", "remove", "set", "props", "segment props", "step", "add batch"};
 
 typedef struct dw_call {
     int kind, id;
     cc_circle c;
+    int n;                     /* a batch add: its circles */
+    cc_circle batch[DW_BATCH];
     cc_circle_props props;
     cc_segment_props seg_props;
     double dt;
@@ -496,11 +508,16 @@ typedef struct dw_call {
 
 static int sim_call(dw_sim *m, const dw_call *k)
 {
+    int i;
     m->n_events = 0;
     m->n_sensed = 0;
+    m->batch_failed = -77;
+    for (i = 0; i < DW_BATCH; i++)
+        m->batch_ids[i] = -77;
     if (m->w != NULL)
         switch (k->kind) {
         case CALL_ADD: return cc_world_add_circle(m->w, &k->c);
+        case CALL_ADD_BATCH: return cc_world_add_circles(m->w, k->batch, k->n, m->batch_ids, &m->batch_failed);
         case CALL_REMOVE: return cc_world_remove_circle(m->w, k->id);
         case CALL_SET: return cc_world_set_circle(m->w, k->id, &k->c);
         case CALL_PROPS: return cc_world_set_circle_props(m->w, k->id, &k->props);
@@ -509,6 +526,7 @@ static int sim_call(dw_sim *m, const dw_call *k)
         }
     switch (k->kind) {
     case CALL_ADD: return rw_add_circle(m->r, &k->c);
+    case CALL_ADD_BATCH: return rw_add_circles(m->r, k->batch, k->n, m->batch_ids, &m->batch_failed);
     case CALL_REMOVE: return rw_remove_circle(m->r, k->id);
     case CALL_SET: return rw_set_circle(m->r, k->id, &k->c);
     case CALL_PROPS: return rw_set_circle_props(m->r, k->id, &k->props);
@@ -531,6 +549,55 @@ static cc_circle_props random_props(dw_scene *sc)
     return p;
 }
 
+/* Does c stay clear (the margin of overlaps()) of the n circles in f? */
+static int clear_of(const dw_scene *sc, const cc_circle *c, const cc_circle *f, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        double dx = diff(sc, f[i].pos.x, c->pos.x, 0), dy = diff(sc, f[i].pos.y, c->pos.y, 1);
+        double R = f[i].radius + c->radius;
+        if (dx * dx + dy * dy < R * R * 1.0201)
+            return 0;
+    }
+    return 1;
+}
+
+/* A batch add: up to DW_BATCH circles (the first round: those still to place, as many as fit),
+ * each placed as add places one and apart from the others' footprints (where each is, where
+ * its push-apart takes it and the circle it lands on), so that the order of the adds decides
+ * nothing the reference could not know. Now and then (after the first round) one of them is
+ * invalid, or the batch finds the world full: both must refuse it alike, adding none. */
+static int next_batch(dw_scene *sc, const dw_sim *ref, int step, int n_live, int max_circles, dw_call *k)
+{
+    cc_circle foot[3 * DW_BATCH];
+    int want = step == 0 ? (sc->to_place < DW_BATCH ? sc->to_place : DW_BATCH) : 1 + rng_int(&sc->rng, 3), nf = 0;
+    if ((step == 0 || !sc->may_fill) && want > max_circles - n_live)
+        want = max_circles - n_live;
+    if (want <= 0 && !sc->may_fill)
+        return 0;
+    if (step > 0 && n_live >= max_circles && rng_unit(&sc->rng) < 0.7)
+        return 0; /* a full world: a refused batch now and then, not every round */
+    k->kind = CALL_ADD_BATCH;
+    k->n = 0;
+    while (k->n < want) {
+        cc_circle c, pushed[2];
+        int tries;
+        for (tries = 0; tries < 5; tries++)
+            if (place(sc, ref, -1, step > 0 && rng_unit(&sc->rng) < 0.25, &c, pushed) && clear_of(sc, &c, foot, nf) &&
+                clear_of(sc, &pushed[0], foot, nf) && clear_of(sc, &pushed[1], foot, nf))
+                break;
+        if (tries == 5)
+            break;
+        foot[nf++] = c, foot[nf++] = pushed[0], foot[nf++] = pushed[1];
+        k->batch[k->n++] = c;
+    }
+    if (step == 0)
+        sc->to_place -= want;
+    if (step > 0 && k->n > 0 && rng_unit(&sc->rng) < 0.1)
+        k->batch[rng_int(&sc->rng, k->n)].radius = 0.0; /* invalid: the batch is refused at its index */
+    return k->n > 0 || step > 0;
+}
+
 /* The next call of the scene (a step ends each round of calls). Returns 0 when there is none
  * to make this time (nothing to remove, no place found). */
 static int next_call(dw_scene *sc, const dw_sim *ref, int step, int last, int max_circles, dw_call *k)
@@ -540,9 +607,11 @@ static int next_call(dw_scene *sc, const dw_sim *ref, int step, int last, int ma
     memset(k, 0, sizeof *k);
     k->id = -1;
     k->kind = last ? CALL_STEP : step == 0 ? CALL_ADD : rng_int(&sc->rng, sc->props ? 5 : 3);
+    if (k->kind == CALL_ADD && sc->batch)
+        return next_batch(sc, ref, step, n_live, max_circles, k);
     switch (k->kind) {
     case CALL_ADD:
-        return n_live < max_circles && place(sc, ref, -1, step > 0 && rng_unit(&sc->rng) < 0.25, &k->c);
+        return n_live < max_circles && place(sc, ref, -1, step > 0 && rng_unit(&sc->rng) < 0.25, &k->c, NULL);
     case CALL_REMOVE:
     case CALL_SET:
     case CALL_PROPS:
@@ -551,7 +620,7 @@ static int next_call(dw_scene *sc, const dw_sim *ref, int step, int last, int ma
         k->id = ids[rng_int(&sc->rng, n_live)];
         if (k->kind == CALL_PROPS)
             k->props = random_props(sc);
-        return k->kind != CALL_SET || place(sc, ref, k->id, rng_unit(&sc->rng) < 0.25, &k->c);
+        return k->kind != CALL_SET || place(sc, ref, k->id, rng_unit(&sc->rng) < 0.25, &k->c, NULL);
     case CALL_SEGMENT_PROPS:
         if (sc->n_seg == 0)
             return 0;
@@ -578,6 +647,8 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
     memset(out, 0, sizeof *out);
     memset(&sc, 0, sizeof sc);
     sc.rng.s = seed * UINT64_C(0x2545F4914F6CDD1D) + 1u;
+    sc.batch = (int)(seed & 1u); /* odd scenes add in batches (no draw: the even ones stay as they were) */
+    sc.may_fill = pairing == DW_WORLD_VS_REFERENCE;
     /* the scene's shape */
     n0 = 2 + rng_int(&sc.rng, pairing == DW_SMALL_VS_GRID ? 20 : 63);
     sc.rmin = 1.0;
@@ -687,8 +758,9 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
             }
         }
     }
+    sc.to_place = n0;
     for (step = 0; out->end == DW_END_DONE && out->events_compared < max_events && step < 60; step++) {
-        int calls = step == 0 ? n0 : rng_int(&sc.rng, 4), q;
+        int calls = step == 0 ? (sc.batch ? (n0 + DW_BATCH - 1) / DW_BATCH : n0) : rng_int(&sc.rng, 4), q;
         for (q = 0; q <= calls && out->end == DW_END_DONE; q++) {
             dw_call call;
             int rc[3], s;
@@ -734,6 +806,24 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
                 } else if (rc[s] != rc[0]) {
                     say(out, "%s: %s returned %d, %s %d", what, sims[0].name, rc[0], sims[s].name, rc[s]);
                     out->end = DW_END_FAILED;
+                }
+            if (call.kind == CALL_ADD_BATCH)
+                out->batches++, out->batches_refused += rc[0] < 0;
+            if (out->end == DW_END_DONE && call.kind == CALL_ADD_BATCH)
+                for (s = 1; s < n_sims; s++) {
+                    int i;
+                    if (sims[s].batch_failed != sims[0].batch_failed)
+                        say(out, "%s: %s's failed %d, %s's %d", what, sims[0].name, sims[0].batch_failed, sims[s].name,
+                            sims[s].batch_failed);
+                    for (i = 0; i < DW_BATCH; i++)
+                        if (sims[s].batch_ids[i] != sims[0].batch_ids[i])
+                            say(out, "%s: %s's id %d is %d, %s's %d", what, sims[0].name, i, sims[0].batch_ids[i],
+                                sims[s].name, sims[s].batch_ids[i]);
+                    if (sims[s].batch_failed != sims[0].batch_failed)
+                        out->end = DW_END_FAILED;
+                    for (i = 0; i < DW_BATCH; i++)
+                        if (sims[s].batch_ids[i] != sims[0].batch_ids[i])
+                            out->end = DW_END_FAILED;
                 }
             if (out->end != DW_END_DONE)
                 break;

@@ -35,6 +35,8 @@ typedef struct dw_result {
     unsigned long sensor_events_compared;
     unsigned long steps_compared;
     unsigned long calls;           /* API calls made on each simulator */
+    unsigned long batches;         /* of those, batch adds (cc_world_add_circles) */
+    unsigned long batches_refused; /* batch adds both refused alike (an invalid circle, full) */
     double worst_dt;               /* largest |t_a - t_b| / time scale among matched events whose
                                       states before differed by rounding only (< 1e-13 L) */
     double worst_dp;               /* largest position difference / length scale after a step */

@@ -587,10 +587,9 @@ int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, rw_senso
     return CC_OK;
 }
 
-int rw_add_circle(rw_world *w, const cc_circle *c)
+static int add_one(rw_world *w, const cc_circle *c)
 {
     int id;
-    new_call(w);
     if (w->busy || !circle_ok(c) || !fits_period(w, c))
         return CC_ERR_INVALID;
     if (w->id_end - w->free_top >= w->max_circles)
@@ -614,6 +613,41 @@ int rw_add_circle(rw_world *w, const cc_circle *c)
         sensors_sync(w);
     w->busy = 0;
     return id;
+}
+
+int rw_add_circle(rw_world *w, const cc_circle *c)
+{
+    new_call(w);
+    return add_one(w, c);
+}
+
+/* "Batches": every circle checked before any is added (the first one add would refuse decides,
+ * its index to *failed), then one add per circle in order, as one call (its doubts summed). */
+int rw_add_circles(rw_world *w, const cc_circle *c, int n, int *ids_out, int *failed)
+{
+    int i;
+    new_call(w);
+    if (w->busy || n < 0 || (c == NULL && n > 0)) {
+        if (failed != NULL)
+            *failed = -1;
+        return CC_ERR_INVALID;
+    }
+    for (i = 0; i < n; i++) {
+        int r = !circle_ok(&c[i]) || !fits_period(w, &c[i]) ? CC_ERR_INVALID
+                : w->id_end - w->free_top + i >= w->max_circles ? CC_ERR_FULL
+                                                                : CC_OK;
+        if (r != CC_OK) {
+            if (failed != NULL)
+                *failed = i;
+            return r;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        int id = add_one(w, &c[i]);
+        if (ids_out != NULL)
+            ids_out[i] = id;
+    }
+    return n;
 }
 
 int rw_remove_circle(rw_world *w, int id)

@@ -77,6 +77,8 @@ typedef struct rw_world {
  * on_event). Returns CC_OK or CC_ERR_INVALID. */
 int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, rw_sensor_fn on_sensor, void *user);
 int rw_add_circle(rw_world *w, const cc_circle *c);
+/* cc_world_add_circles: all checked first, then one add per circle ("Batches"). */
+int rw_add_circles(rw_world *w, const cc_circle *c, int n, int *ids_out, int *failed);
 int rw_remove_circle(rw_world *w, int id);
 int rw_set_circle(rw_world *w, int id, const cc_circle *c);
 int rw_add_segment(rw_world *w, const cc_segment *s);

@@ -11,6 +11,8 @@ Serves demo/web/ on 127.0.0.1 (a free port), loads the page and checks:
     is pulled 45 degrees off the cue and shoots along the aim at the speed of the pull's
     component along it;
   - no console message of level SEVERE (console.error, an uncaught exception, a failed load);
+  - the aiming line (after the second shot, the mouse on the ball nearest the cue ball) is the
+    cue ball's own cast with ignore= its id: it finds a ball, not the cue ball it starts in;
   - the reset button brings a new rack (after the state below is taken);
   - every resource the page loaded came from the local server;
   - determinism across targets: the page's journal (every call that changed the world) replayed
@@ -222,6 +224,14 @@ def main():
         move.perform()
         time.sleep(0.2)
 
+        # the aiming line is the cue ball's own cast, which its filter's ignore= leaves out: it
+        # finds the ball aimed at, not the cue ball it starts inside (an overlap at t = 0)
+        aim_hit, cue_id = driver.execute_script("return [ccPage.aimHit(), ccPage.cueId()]")
+        if not aim_hit or aim_hit["circle"] < 0 or aim_hit["circle"] == cue_id or aim_hit["overlap"]:
+            failures.append("the aiming cast found %r (the cue ball is %d): not the ball aimed at" % (aim_hit, cue_id))
+        else:
+            print("aiming cast: ball %d at t = %.3f of the line (the cue ball %d left out by ignore=)"
+                  % (aim_hit["circle"], aim_hit["t"], cue_id))
         driver.save_screenshot(os.path.join(args.out, "pool.png"))
         journal = driver.execute_script("return ccPage.journal()")
         page_state = driver.execute_script("return ccPage.worldState()")
