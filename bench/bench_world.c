@@ -10,6 +10,8 @@
  *        bench_world disks [--quick]       periodic hard disks at area fractions 0.3, 0.5, 0.7
  *        bench_world uses [--quick] [--max-n N] [--csv FILE]  bytes per circle for uses = 0, PROPS,
  *                                          ALL, and the periodic gas with uses = 0 against ALL
+ *        bench_world table [--quick]       walls hold: escapes against |v| dt / r, every mode
+ *        bench_world jam [--quick]         how long a step that jams takes at its event cap
  *        bench_world dump-gas N PHI    (the gas's initial state, one circle a line, for peers)
  *        bench_world check-trace N PHI FILE (judges a peer's recorded steps, see peers.py)
  *        bench_world peer N PHI T_END DT  (our EXACT world on the peers' terms)
@@ -605,6 +607,147 @@ static int cmd_uses(const opts *o)
     return 0;
 }
 
+/* The table (issue 36): a walled 20 x 10 box, 80 circles of radius 0.4 on a lattice, moving at
+ * one speed in random directions, 3,000 steps of 0.05 (300 with --quick) in each mode, at speeds
+ * of 0.25 to 16 radii a step (|v| dt / r). escapes: circle-steps with a centre outside the box
+ * after a step; lost: circles outside at the end. Walls keep their side in every mode, so both
+ * must be 0 at every speed (circles may still pass through each other in DISCRETE and SWEPT). */
+static long table_run(int mode, double per_r, int steps, long *lost, double *sec)
+{
+    static const cc_segment box[4] = {{{0, 0}, {20, 0}}, {{20, 0}, {20, 10}}, {{20, 10}, {0, 10}}, {{0, 10}, {0, 0}}};
+    const double r = 0.4, dt = 0.05, speed = per_r * r / dt;
+    cc_world_def def;
+    cc_world *w;
+    cc_circle c[80];
+    bench_rng rng = {36};
+    void *mem;
+    size_t bytes;
+    long out = 0;
+    int i, k, st;
+    double t0;
+    cc_world_def_init(&def);
+    def.mode = mode;
+    def.max_circles = 80;
+    def.max_segments = 4;
+    bytes = cc_world_size(&def);
+    mem = bench_alloc(bytes);
+    w = cc_world_init(mem, bytes, &def, &st);
+    for (i = 0; i < 4; i++)
+        (void)cc_world_add_segment(w, &box[i]);
+    for (i = 0; i < 80; i++) {
+        double a = bench_uniform(&rng, 0.0, 6.283185307179586);
+        cc_circle q = {{1.0 + 2.0 * (i % 10), 0.625 + 1.25 * (i / 10)}, {speed * cos(a), speed * sin(a)}, r, 1.0};
+        (void)cc_world_add_circle(w, &q);
+    }
+    *sec = 0.0;
+    for (k = 0; k < steps; k++) {
+        t0 = bench_now();
+        step(w, dt);
+        *sec += bench_now() - t0;
+        (void)cc_world_get_circles(w, NULL, c, 80);
+        for (i = 0; i < 80; i++)
+            out += !(c[i].pos.x > 0.0 && c[i].pos.x < 20.0 && c[i].pos.y > 0.0 && c[i].pos.y < 10.0);
+    }
+    *lost = 0;
+    for (i = 0; i < 80; i++)
+        *lost += !(c[i].pos.x > 0.0 && c[i].pos.x < 20.0 && c[i].pos.y > 0.0 && c[i].pos.y < 10.0);
+    *sec /= steps;
+    free(mem);
+    return out;
+}
+
+static int cmd_table(const opts *o)
+{
+    static const double per_r[] = {0.25, 0.5, 1.0, 1.05, 2.0, 4.0, 8.0, 16.0};
+    int mode, k, steps = o->quick ? 300 : 3000;
+    long bad = 0;
+    printf("%-8s %8s %10s %6s %12s\n", "mode", "|v|dt/r", "escapes", "lost", "us/step");
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
+        for (k = 0; k < (int)(sizeof per_r / sizeof per_r[0]); k++) {
+            long lost;
+            double sec;
+            long esc = table_run(mode, per_r[k], steps, &lost, &sec);
+            printf("%-8s %8.2f %10ld %6ld %12.2f\n", mode_name[mode], per_r[k], esc, lost, 1e6 * sec);
+            printf("figure table_%s_escapes_at_%g_r %ld\n", mode_name[mode], per_r[k], esc);
+            bad += esc + lost;
+        }
+    printf("figure table_escapes_total %ld\n", bad);
+    return 0;
+}
+
+/* A step that jams (issue 36): a kinematic circle (mass +INFINITY, speed 1) driving into a row of
+ * rolling circles (deceleration 0.5, restitution 0.5): its impacts come ever closer in time and
+ * EXACT stops at max_events. The time of a capped step at caps of 1e4, 1e5 (and 1e6 without
+ * --quick), per event and in all, next to the time per event of the same world's circles as a
+ * plain gas (no kinematic circle, no friction) measured in the same run: what the header's
+ * "Collapse" quotes. Medians of 3 runs with their spread. */
+static double jam_run(int n, uint64_t cap, int jam, uint64_t *events)
+{
+    cc_world_def def;
+    cc_world *w;
+    cc_world_stats s;
+    void *mem;
+    size_t bytes;
+    int i, st;
+    double t0, t1;
+    cc_world_def_init(&def);
+    def.max_circles = n + 1;
+    def.max_events = cap;
+    if (jam) {
+        def.rolling_decel = 0.5;
+        def.restitution = 0.5;
+    }
+    bytes = cc_world_size(&def);
+    mem = bench_alloc(bytes);
+    w = cc_world_init(mem, bytes, &def, &st);
+    for (i = 0; i < n; i++) {
+        cc_circle c = {{(i % 10) * 2.2, (i / 10) * 2.2}, {0, 0}, 1, 1};
+        if (!jam)
+            c.vel.x = (i * 7) % 5 - 2.0, c.vel.y = (i * 3) % 5 - 2.0;
+        (void)cc_world_add_circle(w, &c);
+    }
+    if (jam) {
+        cc_circle k = {{-3, 0}, {1, 0}, 1, INFINITY};
+        (void)cc_world_add_circle(w, &k);
+    }
+    (void)cc_world_step(w, 0.0);
+    t0 = bench_now();
+    (void)cc_world_step(w, jam ? 30.0 : 200.0);
+    t1 = bench_now();
+    s.struct_size = sizeof s;
+    (void)cc_world_get_stats(w, &s);
+    *events = s.events;
+    free(mem);
+    return t1 - t0;
+}
+
+static int cmd_jam(const opts *o)
+{
+    static const uint64_t caps[] = {10000, 100000, 1000000};
+    int n = 100, k, rep, ncaps = o->quick ? 2 : 3;
+    double gas[3], lo, hi, gas_us;
+    uint64_t ev;
+    for (rep = 0; rep < 3; rep++)
+        gas[rep] = 1e6 * jam_run(n, 10000000u, 0, &ev) / (double)(ev ? ev : 1);
+    bench_range(gas, 3, &lo, &hi);
+    gas_us = bench_median(gas, 3);
+    printf("gas of %d circles: %.3g us/event (%.3g-%.3g)\n", n, gas_us, lo, hi);
+    for (k = 0; k < ncaps; k++) {
+        double t[3], tmed;
+        for (rep = 0; rep < 3; rep++)
+            t[rep] = jam_run(n, caps[k], 1, &ev);
+        bench_range(t, 3, &lo, &hi);
+        tmed = bench_median(t, 3);
+        printf("jam of %d circles, cap %llu: %llu events, %.3g s (%.3g-%.3g), %.3g us/event, %.3g x the gas's\n", n,
+               (unsigned long long)caps[k], (unsigned long long)ev, tmed, lo, hi, 1e6 * tmed / (double)ev,
+               1e6 * tmed / (double)ev / gas_us);
+        printf("figure jam_us_per_event_cap_%llu %.4g\n", (unsigned long long)caps[k], 1e6 * tmed / (double)ev);
+        printf("figure jam_over_gas_per_event_cap_%llu %.4g\n", (unsigned long long)caps[k],
+               1e6 * tmed / (double)ev / gas_us);
+    }
+    return 0;
+}
+
 static int cmd_dump_gas(int n, double phi)
 {
     bench_scene s;
@@ -688,7 +831,7 @@ int main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     o.max_n = 1000000;
     if (argc < 2) {
-        fprintf(stderr, "usage: %s matrix|headline|scaling|features|disks|uses|dump-gas ... [--quick] [--csv FILE]\n", argv[0]);
+        fprintf(stderr, "usage: %s matrix|headline|scaling|features|disks|uses|table|jam|dump-gas ... [--quick] [--csv FILE]\n", argv[0]);
         return 2;
     }
     if (!strcmp(argv[1], "dump-gas") && argc == 4)
@@ -721,6 +864,10 @@ int main(int argc, char **argv)
         return cmd_uses(&o);
     if (!strcmp(argv[1], "disks"))
         return cmd_disks(&o);
+    if (!strcmp(argv[1], "table"))
+        return cmd_table(&o);
+    if (!strcmp(argv[1], "jam"))
+        return cmd_jam(&o);
     fprintf(stderr, "bench_world: unknown command %s\n", argv[1]);
     return 2;
 }

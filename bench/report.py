@@ -364,6 +364,8 @@ def main():
             w("```")
             w("")
 
+    notes("walls_notes.md")  # the hand-kept table of escapes against speed and the jam, after section 2
+
     # ---- scaling
     if scaling:
         w("## 3. Scaling of EXACT with N")

@@ -30,7 +30,7 @@ void demo_print_usage(FILE *f)
         "                 cradle      Newton's cradle: touching balls in a row, 1 to 3 hitting\n"
         "                 gas         thousands of circles in a box, one heavy one among them\n"
         "                 tunnel      fast bullets in a box in EXACT, SWEPT and DISCRETE mode\n"
-        "                             side by side: who stays in, who tunnels out\n"
+        "                             side by side: who passes through whom\n"
         "                 hard-disks  1040 disks in a periodic box at area fraction 0.70,\n"
         "                             with their pressure from the virial\n"
         "  --frames N     number of frames to write, 1 to %ld\n"

@@ -1,9 +1,10 @@
 /* Tunnelling, side by side: the same box with six bullets (speeds from 3 to 300 box units per
  * second, i.e. from a twentieth of a unit to five units per frame at 60 fps) and three heavier
- * targets, simulated in EXACT, SWEPT and DISCRETE mode. EXACT keeps everything in the box;
- * SWEPT catches each body's first impact in a frame but not a second one, so fast bullets escape
- * through corners; DISCRETE only sees overlaps at the end of a frame, so fast bullets fly
- * through walls and targets. The caption counts the bodies still in the box. Units: box 6 x 10. */
+ * targets, simulated in EXACT, SWEPT and DISCRETE mode. Walls keep their side in every mode, so
+ * all nine stay in the box; EXACT finds every impact; SWEPT catches each body's first impact in
+ * a frame but misses a second one with a circle, and DISCRETE only sees overlaps at the end of
+ * a frame, so there fast bullets fly through the targets and each other. The caption counts the
+ * bodies in the box. Units: box 6 x 10. */
 #include "scene.h"
 #include "scene_util.h"
 

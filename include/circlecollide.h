@@ -255,12 +255,26 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *
  * Memory    Everything lives inside [memory, memory + bytes): the world stores no address, not
  *           even into its own block, so a world may be copied (memcpy) to other 8-byte aligned
- *           memory of the same size and used from there. It keeps no pointer to the caller's
+ *           memory of the same size and used from there (while a call that fires callbacks
+ *           runs it holds its own address as a number, never followed: see "Snapshots"). It keeps no pointer to the caller's
  *           defs, circles or segments (it copies them). About 225 bytes per circle (one 64-byte
  *           line of hot state, the predicted event, queue and grid entries, and 56 bytes of
  *           properties that only a world using them reads) plus about 200 per wall (the wall, its
  *           properties and its place in the walls' tree);
  *           EXACT adds one block of at most 15 KB for simultaneous impacts (see below).
+ * Snapshots A memcpy of the world is a snapshot wherever it is taken, also from inside a
+ *           callback: a world is busy (its mutators and cc_world_step refused: CC_ERR_BUSY, or
+ *           CC_ERR_INVALID for a 1.0 or 1.1 def) only at
+ *           the address of the world whose call is running, so a copy in other memory is a world
+ *           of its own at once. Taken inside a callback it is the world as the callback sees it,
+ *           at that contact's time, with what the call had still to do left undone; the first
+ *           call that changes the copy (a step, a mutator) makes it whole (every prediction made
+ *           again at its time, as after an added wall) and the copy goes on from there (not bit
+ *           for bit the run it was taken from; two copies of it treated alike end alike). Only
+ *           its bytes copied back over the very world it was taken from cannot be told from that
+ *           world inside its call, and are busy there: to keep such a snapshot for later, call
+ *           cc_world_step(copy, 0) once where it was copied to (the world itself refuses that
+ *           call from its callback); from then on it is an ordinary world, to be copied anywhere.
  * Ids       cc_world_add_circle returns the most recently removed id when there is one (removed
  *           ids are reused last-in first-out), else the lowest never-used id. An id stays valid
  *           and names the same circle until it is removed; others are never renumbered.
@@ -272,6 +286,16 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  * Modes     CC_MODE_EXACT (event-driven, see below), CC_MODE_SWEPT and CC_MODE_DISCRETE (see
  *           cc_mode). All three use the same pair functions (cc_sweep, cc_sweep_segment,
  *           cc_respond, cc_respond_segment, cc_separate) and the same grid.
+ * Walls     Walls keep their side in every mode, at any speed: EXACT finds every wall impact;
+ *           SWEPT finds a circle's first impact of the step and DISCRETE none, and there a centre
+ *           whose straight path since its last impulse (or the step's start) crossed a wall's
+ *           segment, or that a push-apart carried across one, is put back a radius from the
+ *           wall's line on the side it came from and takes the wall's impulse (up to 4 walls per
+ *           circle and step, so that a corner holds). A centre passing beyond a wall's end went
+ *           round it; a point wall (a == b) has no sides: a circle is pushed off it towards where
+ *           its centre is. A circle still passes through other circles in SWEPT and DISCRETE
+ *           (see cc_mode); bench_world table counts escapes against |v| dt / r (0 in every mode
+ *           up to 16 radii a step, docs/BENCHMARKS.md).
  * EXACT     Every impact is found and processed in time order, at any speed: no tunnelling.
  *           Each moving circle holds one predicted event (an impact with a circle or a wall, or
  *           leaving its grid cell) in a priority queue; an impact changes the velocities of the
@@ -330,7 +354,13 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           per step and do not count against it): it then returns CC_EVENT_LIMIT with the world
  *           consistent at the time of the last event processed; the next cc_world_step
  *           continues from there. A body squeezed between an immovable circle moving towards
- *           a wall (an impossible scene) hits that cap at every call.
+ *           a wall (an impossible scene) hits that cap at every call. How long a capped step
+ *           takes: the events of a step that jams (see "Pushing") cost 7 to 10 us each on a
+ *           desktop core, 50 to 70 times an event of a plain gas (bench_world jam), so at the
+ *           default cap of 1e7 such a step runs about 100 s before it returns (minutes under
+ *           a sanitizer). The default suits offline runs, whose long steps need many events; a
+ *           real-time caller sets a cap its frame affords: 10,000 events end a jammed step of
+ *           100 circles in under 0.1 s (the same bench).
  * Simultaneous  In EXACT, an impact is resolved together with everything touching the two
  *           bodies at that instant: circles and walls whose gap is below 2^-40 of the size of
  *           the numbers involved (coordinates, radii, speeds times |world time|), found
@@ -364,11 +394,13 @@ typedef enum cc_mode {
     CC_MODE_SWEPT = 1,   /* once per step: the grid is rebuilt (overlaps pushed apart), each
                             circle's first impact in the step is found from the motions at the
                             start of the step, and the impacts are resolved in time order
-                            without predicting again; a second impact of a circle within one
-                            step is missed (it is left overlapping until the next step) */
+                            without predicting again; a second impact of a circle with a circle
+                            within one step is missed (it is left overlapping until the next
+                            step), one with a wall is not (see "Walls") */
     CC_MODE_DISCRETE = 2 /* move every circle by dt, then push apart every overlapping pair
                             and wall contact and give approaching pairs their impulse; a circle
-                            moving more than its size per step can pass through others */
+                            moving more than its size per step can pass through other circles,
+                            never through a wall (see "Walls") */
 } cc_mode;
 
 /* Passed to the contact callback for every impulse the world applies. */
@@ -393,7 +425,8 @@ typedef struct cc_contact_event {
  * step and the props setters called from inside return CC_ERR_BUSY (CC_ERR_INVALID in a world
  * made from a 1.0 or 1.1 def) and do nothing, whichever call fired it (the world fuzzer tries
  * each from both callbacks). Record what you need and act on it after that call returns (e.g.
- * remove a pocketed ball after the step). */
+ * remove a pocketed ball after the step); a memcpy of the world taken there is a world of its
+ * own, not refused (see "Snapshots"). */
 typedef void (*cc_contact_fn)(const cc_contact_event *event, void *user);
 
 /* Passed to the sensor callback when a circle begins or stops overlapping a sensor circle (see
@@ -425,11 +458,14 @@ typedef struct cc_world_def {
     int max_circles;          /* capacity for circles, >= 0 (default 64) */
     int max_segments;         /* capacity for walls, >= 0 (default 0: a scene without walls pays nothing) */
     int mode;                 /* a cc_mode (default CC_MODE_EXACT) */
-    double restitution;       /* coefficient of restitution of every contact, [0, 1] (default 1) */
+    double restitution;       /* [0, 1]: the restitution every circle and wall starts with (default
+                                 1); a contact's is restitution_mix of its two sides' (see
+                                 Restitution under "Per-body properties") */
     double rest_speed;        /* >= 0: approach speeds below this collide with restitution 0: the
                                  remedy for inelastic collapse when restitution < 1 (default 0) */
     double cell_size;         /* >= 0: smallest grid cell size; 0 = derived from the radii (default 0) */
-    uint64_t max_events;      /* >= 1: cap on events per cc_world_step (default 10000000) */
+    uint64_t max_events;      /* >= 1: cap on events per EXACT cc_world_step (default 10000000:
+                                 offline; what a capped step costs: "Collapse") */
     cc_contact_fn on_contact; /* called for every impulse, or NULL (default NULL) */
     void *user;               /* passed to on_contact and on_sensor */
     /* ---- 1.1 (a def of 1.0's size gets these defaults) ---- */
@@ -625,11 +661,16 @@ CC_API int cc_world_get_stats(const cc_world *w, cc_world_stats *out);
 /* ---- Per-body properties: restitution, filters, sensors (1.1) ------------------------------- */
 /* Every circle and wall carries properties. A new circle gets def.restitution,
  * def.rolling_decel, category 1, mask 0xFFFFFFFF and is not a sensor; a new wall gets
- * def.restitution, category 1 and mask 0xFFFFFFFF. A world whose circles and walls keep these
- * runs exactly as it would without them (the same events, bit for bit, at the same cost).
+ * def.restitution, category 1 and mask 0xFFFFFFFF. A default is a value like any other: a side
+ * that keeps it is mixed as one given that value. A world whose circles and walls keep these
+ * runs exactly as it would without them (the same events, bit for bit, at the same cost), its
+ * contacts at the restitution its mix makes of def.restitution with itself (see Restitution).
  *
  * Restitution  A contact's restitution is def.restitution_mix of the two sides' (a circle's and
- *           a wall's for a wall contact); approaches slower than def.rest_speed still get 0. A
+ *           a wall's for a wall contact); approaches slower than def.rest_speed still get 0.
+ *           The mix is of the sides' values, wherever they came from: between two sides of
+ *           def.restitution e, MIN, MAX and MEAN give e itself, PRODUCT gives e * e (0.81 for
+ *           0.9: with it, def.restitution is each material's factor, not the contact's). A
  *           simultaneous impact (see "Simultaneous") uses the smallest restitution of the
  *           contacts in its cluster: a cue ball into a rack of one material behaves as before,
  *           a ball into a corner of two cushions of 0.75 and 0.6 gets 0.6 at both, and kinetic

@@ -6,7 +6,12 @@
 # build of the 1.0.0 sources). abi_abidiff checks the symbols and types; this checks behaviour:
 # defaults, the reading of a 1.0-sized def, results to the bit. Host builds only: the digest is
 # x86-64's (a cross build's results may round differently, and it has no shared library to swap).
-set(CC_COMPAT_1_0_DIGEST "digest f51fc4d23ce097ea, 911 contacts")
+# 1.2 changed one thing on purpose (API.md 1.2 lets a world's results differ from an earlier
+# version's): walls keep their side in SWEPT and DISCRETE (src/world/sides.c), which gives the
+# program's SWEPT and DISCRETE walls 16 more contacts. 1.0.0 printed "digest f51fc4d23ce097ea, 911
+# contacts", and so does this library with sides.c's pass made to do nothing (checked when the
+# digest below was taken): nothing else differs.
+set(CC_COMPAT_1_0_DIGEST "digest 2209c9000356546c, 927 contacts")
 if(TARGET circlecollide AND NOT CMAKE_CROSSCOMPILING AND CMAKE_SYSTEM_PROCESSOR MATCHES "x86_64|AMD64")
   foreach(_h 1_0 1_1)
     add_executable(compat_program_${_h} compat/program_1_0.c)

@@ -570,6 +570,67 @@ static void test_setters_refused_from_callback(void)
     tw_free(&m);
 }
 
+/* def.restitution is a side's default, mixed like any value a side is given: with e = 0.9 on
+ * every side (nothing set), a contact gets mix(0.9, 0.9): 0.9 under MIN, MAX and MEAN (each
+ * gives back a value mixed with itself, exactly: 0.5 * (e + e) = e), and 0.9 * 0.9 under
+ * PRODUCT (0.81 as doubles). Two probes in every mode: a ball (r 1, speed 1 along +x) into a wall
+ * at x = 5 leaves at -e; two equal balls head-on at +-1 leave at -+e. A world whose sides are
+ * given 0.9 explicitly (0.5 first, then 0.9, so that its contacts are mixed side by side) runs
+ * bit for bit as the one that kept the default, in every mix: a default is nothing but its value. */
+static void test_default_restitution_is_mixed_like_any_side(void)
+{
+    int mix, mode, given;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
+        for (mix = CC_MIX_MIN; mix <= CC_MIX_MEAN; mix++) {
+            double e = mix == CC_MIX_PRODUCT ? 0.9 * 0.9 : 0.9;
+            cc_circle first[3];
+            for (given = 0; given < 2; given++) {
+                tw_mem m;
+                cc_world_def d;
+                cc_world *w;
+                cc_circle got[3];
+                char what[80];
+                int k;
+                cc_world_def_init(&d);
+                d.mode = mode;
+                d.max_circles = 4;
+                d.max_segments = 1;
+                d.restitution = 0.9;
+                d.restitution_mix = mix;
+                w = tw_make(&m, &d, 0);
+                snprintf(what, sizeof what, "mode %d, mix %d, given %d", mode, mix, given);
+                TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &(cc_circle){{0, 0}, {1, 0}, 1, 1}));
+                TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &(cc_segment){{5, -10}, {5, 10}}));
+                TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &(cc_circle){{-5, 20}, {1, 0}, 1, 1}));
+                TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &(cc_circle){{5, 20}, {-1, 0}, 1, 1}));
+                if (given) { /* 0.5 first: a world once given another restitution mixes per side */
+                    cc_segment_props q = segment_props(w, 0);
+                    q.restitution = 0.5;
+                    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_segment_props(w, 0, &q));
+                    q.restitution = 0.9;
+                    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_segment_props(w, 0, &q));
+                    for (k = 0; k < 3; k++) {
+                        cc_circle_props p = circle_props(w, k);
+                        p.restitution = 0.5;
+                        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle_props(w, k, &p));
+                        p.restitution = 0.9;
+                        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle_props(w, k, &p));
+                    }
+                }
+                run(w, 6.0, mode); /* the wall at t = 4, the pair at t = 4 */
+                TEST_ASSERT_EQUAL_INT(3, cc_world_get_circles(w, NULL, got, 3));
+                TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(1e-12, -e, got[0].vel.x, what);
+                TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(1e-12, -e, got[1].vel.x, what);
+                TEST_ASSERT_DOUBLE_WITHIN_MESSAGE(1e-12, e, got[2].vel.x, what);
+                if (given)
+                    TEST_ASSERT_EQUAL_MEMORY_MESSAGE(first, got, sizeof got, what);
+                else
+                    memcpy(first, got, sizeof got);
+                tw_free(&m);
+            }
+        }
+}
+
 /* Properties set to what they already are change nothing, bit for bit; and a world that uses a
  * feature elsewhere (a sensor far away, filters that admit everything) runs the other circles'
  * events bit for bit as before: the gas of test_world_util's kind, 200 circles in a box. */
@@ -638,5 +699,6 @@ int main(void)
     RUN_TEST(test_props_defaults_and_handshake);
     RUN_TEST(test_setters_refused_from_callback);
     RUN_TEST(test_unused_properties_change_no_bit);
+    RUN_TEST(test_default_restitution_is_mixed_like_any_side);
     return UNITY_END();
 }

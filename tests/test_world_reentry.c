@@ -196,6 +196,170 @@ static void test_pile_of_adds_from_callbacks_keeps_world_consistent(void)
     }
 }
 
+/* Snapshots taken from inside a callback: the world's bytes copied (memcpy, as the header allows)
+ * on the callback's first call, into memory of their own, while the call that fired it runs. */
+typedef struct snap {
+    tw_mem mem;      /* its memory (tw_make's alignment), as large as the world's */
+    cc_world *live;  /* the world whose callback takes it */
+    double t;        /* the callback's event time */
+    int taken;
+    int live_step;   /* what cc_world_step(live, 0) answered from inside the callback */
+} snap;
+
+static cc_world *snap_world(const snap *s) { return (cc_world *)(void *)s->mem.mem; }
+
+/* 16-aligned memory of `bytes`, filled from `from`. */
+static cc_world *mem_copy(tw_mem *m, const void *from, size_t bytes)
+{
+    m->raw = (unsigned char *)malloc(bytes + 16);
+    TEST_ASSERT_NOT_NULL(m->raw);
+    m->mem = m->raw + ((16u - ((size_t)m->raw & 15u)) & 15u);
+    m->bytes = bytes;
+    memcpy(m->mem, from, bytes);
+    return (cc_world *)(void *)m->mem;
+}
+
+/* A second copy, in memory of its own, of the snapshot as it is now. */
+static cc_world *snap_copy(tw_mem *m, const snap *s) { return mem_copy(m, s->mem.mem, s->mem.bytes); }
+
+static snap *g_snap;
+
+static void snap_on_contact(const cc_contact_event *e, void *user)
+{
+    snap *s = g_snap;
+    (void)user;
+    if (s == NULL || s->taken || s->live == NULL)
+        return;
+    s->taken = 1;
+    s->t = e->t;
+    memcpy(s->mem.mem, s->live, s->mem.bytes);
+    s->live_step = cc_world_step(s->live, 0.0); /* the call that takes a snapshot over: refused here */
+}
+
+/* The scene of run() with the snapshot's callback (and, first, its memory). */
+static cc_world *snap_run(tw_mem *m, int mode, int fire, snap *s)
+{
+    cc_world_def d;
+    cc_world *w;
+    cc_circle a = tw_circle(0, 0, 0, 0, 1, 1), b = tw_circle(5, 0, 0, 0, 1, 1), c = tw_circle(0, 10, 3, 0, 1, 1);
+    cc_circle onto = tw_circle(1.5, 0, -1, 0, 1, 1);
+    cc_segment l = tw_segment(-20, -30, -20, 30), r = tw_segment(20, -30, 20, 30);
+    int k;
+    cc_world_def_init(&d);
+    d.max_circles = 64;
+    d.max_segments = 4;
+    d.mode = mode;
+    d.on_contact = snap_on_contact;
+    memset(s, 0, sizeof *s);
+    w = tw_make(m, &d, 0);
+    TEST_ASSERT_NOT_NULL(w);
+    (void)mem_copy(&s->mem, m->mem, m->bytes);
+    g_snap = s;
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &a));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &b));
+    TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &c));
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &l));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_add_segment(w, &r));
+    TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.0));
+    s->live = w; /* from here on: the first contact takes the snapshot */
+    if (fire == FIRE_ADD)
+        TEST_ASSERT_EQUAL_INT(3, cc_world_add_circle(w, &onto));
+    else if (fire == FIRE_SET)
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle(w, 1, &onto));
+    for (k = 0; k < 100; k++) /* c meets the wall at x = 20 near t = 6 */
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.1));
+    TEST_ASSERT_TRUE(s->taken);
+    g_snap = NULL;
+    return w;
+}
+
+/* Every mutator on the copy, then steps: what a game does with the impact it kept. */
+static void use_snapshot(cc_world *w, const char *what)
+{
+    cc_circle far = tw_circle(0, -20, 0, 1, 1, 1), got;
+    cc_segment top = tw_segment(-20, 30, 20, 30);
+    int k;
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CC_OK, cc_world_step(w, 0.1), what);
+    int id = cc_world_add_circle(w, &far);
+    TEST_ASSERT_TRUE_MESSAGE(id >= 3, what);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CC_OK, cc_world_remove_circle(w, id), what);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CC_OK, cc_world_get_circle(w, 2, &got), what);
+    got.vel.y = 0.5;
+    TEST_ASSERT_EQUAL_INT_MESSAGE(CC_OK, cc_world_set_circle(w, 2, &got), what);
+    TEST_ASSERT_EQUAL_INT_MESSAGE(2, cc_world_add_segment(w, &top), what);
+    for (k = 0; k < 200; k++) /* steps of 0.1, as the world's own */
+        TEST_ASSERT_EQUAL_INT_MESSAGE(CC_OK, cc_world_step(w, 0.1), what);
+}
+
+/* A copy taken inside the callback of each call that fires one (add, set, step), in each mode,
+ * is a world of its own: not busy (its guard named the memory it was copied from), it steps,
+ * takes every mutator, and two copies of it treated alike end bit for bit alike, their circles
+ * apart (EXACT) and held by the walls. Meanwhile the world it was taken from still refuses, from
+ * that callback, the very call that takes a copy over (a step of 0). */
+static void test_snapshot_taken_in_a_callback_is_a_world_of_its_own(void)
+{
+    int mode, fire, i, j;
+    char what[96];
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++)
+        for (fire = 0; fire < FIRE_COUNT; fire++) {
+            tw_mem m, m2;
+            snap s;
+            cc_world *w = snap_run(&m, mode, fire, &s), *c1 = snap_world(&s), *c2;
+            cc_circle c[8];
+            int n;
+            snprintf(what, sizeof what, "mode %d, snapshot in a callback fired by %s", mode, fire_name[fire]);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(tw_code(CC_ERR_BUSY), s.live_step, what);
+            TEST_ASSERT_EQUAL_DOUBLE_MESSAGE(s.t, cc_world_time(c1), what);
+            c2 = snap_copy(&m2, &s);
+            use_snapshot(c1, what);
+            use_snapshot(c2, what);
+            assert_same_world(c1, c2, what);
+            TEST_ASSERT_EQUAL_UINT64_MESSAGE(cc_world_hash(c1), cc_world_hash(c2), what);
+            n = cc_world_get_circles(c1, NULL, c, 8);
+            TEST_ASSERT_EQUAL_INT_MESSAGE(fire == FIRE_ADD ? 4 : 3, n, what);
+            for (i = 0; i < n; i++) {
+                TEST_ASSERT_TRUE_MESSAGE(fabs(c[i].pos.x) < 20.0, what);
+                for (j = i + 1; j < n && mode == CC_MODE_EXACT; j++) {
+                    double dx = c[j].pos.x - c[i].pos.x, dy = c[j].pos.y - c[i].pos.y;
+                    TEST_ASSERT_TRUE_MESSAGE(sqrt(dx * dx + dy * dy) > c[i].radius + c[j].radius - 1e-10, what);
+                }
+            }
+            TEST_ASSERT_EQUAL_INT_MESSAGE(CC_OK, cc_world_step(w, 1.0), what); /* the world itself steps on */
+            tw_free(&m2);
+            tw_free(&s.mem);
+            tw_free(&m);
+        }
+}
+
+/* A snapshot kept for later and copied back over the world it came from (a replay): copied as
+ * taken, its bytes are that world inside the call that took it, which no one can tell from the
+ * call still running, so it stays busy (the header says so); taken over first where it was kept
+ * (cc_world_step(copy, 0)), it is an ordinary world and goes anywhere, its own place included. */
+static void test_snapshot_copied_back_over_its_world(void)
+{
+    int mode;
+    for (mode = CC_MODE_EXACT; mode <= CC_MODE_DISCRETE; mode++) {
+        tw_mem m, m2, m3;
+        snap s;
+        cc_world *w = snap_run(&m, mode, FIRE_STEP, &s), *kept = snap_world(&s), *raw, *twin;
+        raw = snap_copy(&m2, &s); /* as taken */
+        memcpy(w, raw, s.mem.bytes);
+        TEST_ASSERT_EQUAL_INT(tw_code(CC_ERR_BUSY), cc_world_step(w, 1.0));
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(kept, 0.0)); /* taken over where it is kept */
+        twin = snap_copy(&m3, &s);
+        memcpy(w, kept, s.mem.bytes);
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 10.0));
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(twin, 10.0));
+        assert_same_world(w, twin, "a snapshot taken over, then copied back");
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(raw, 10.0)); /* the raw copy, where it is, steps */
+        assert_same_world(raw, twin, "the raw copy stepped where it is");
+        tw_free(&m3);
+        tw_free(&m2);
+        tw_free(&s.mem);
+        tw_free(&m);
+    }
+}
+
 /* cc_world_get_stats with every struct_size from the smallest accepted to the whole struct:
  * exactly the fields that end within it are written (a cut field is untouched), struct_size is
  * kept. Field ends are taken from offsetof, so the test holds on 32-bit targets too. */
@@ -276,6 +440,8 @@ int main(void)
     RUN_TEST(test_every_mutator_refused_from_every_callback);
     RUN_TEST(test_add_from_add_callback_is_refused);
     RUN_TEST(test_pile_of_adds_from_callbacks_keeps_world_consistent);
+    RUN_TEST(test_snapshot_taken_in_a_callback_is_a_world_of_its_own);
+    RUN_TEST(test_snapshot_copied_back_over_its_world);
     RUN_TEST(test_stats_size_inside_every_field);
     RUN_TEST(test_def_size_inside_a_field);
     return UNITY_END();

@@ -205,6 +205,7 @@ void cc__rebuild(cc_world *w)
         cc__grid_clear(w);
     if (w->use_grid && w->mode != CC_MODE_EXACT) {
         cc__file_all(w);
+        cc__side_stash(w);
         cc__unoverlap_cells(w);
     } else {
         for (i = 0; i < w->id_end; i++) {
@@ -214,6 +215,8 @@ void cc__rebuild(cc_world *w)
             cc__advance_body(w, &B[i], w->now);
             cc__grid_insert(w, i);
         }
+        if (w->mode != CC_MODE_EXACT)
+            cc__side_stash(w);
         for (i = 0; i < w->id_end; i++)
             if ((C[i].flags & CC__ALIVE) && !(C[i].flags & CC__LARGE))
                 cc__unoverlap_body(w, i, 1);
@@ -222,6 +225,8 @@ void cc__rebuild(cc_world *w)
         for (i = 0; i < w->id_end; i++)
             if (i != j && (C[i].flags & CC__ALIVE))
                 (void)cc__world_unoverlap(w, i, j, -1);
+    if (w->mode != CC_MODE_EXACT) /* a push-apart may have carried a centre past a wall */
+        cc__keep_wall_sides(w, 1);
     while (cc__world_take_touched(w) >= 0)
         ; /* everything is predicted below */
     if (w->mode == CC_MODE_EXACT && (w->features & CC__F_SENSOR))

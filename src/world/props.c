@@ -128,7 +128,7 @@ CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props 
     int k, was_sensor, slot = -1;
     if (!cc__world_ok(w) || in == NULL)
         return CC_ERR_INVALID;
-    if (w->busy)
+    if (cc__busy(w))
         return cc__world_code(w, CC_ERR_BUSY);
     if (in->struct_size < CC__END(cc_circle_props, restitution))
         return CC_ERR_VERSION;
@@ -163,7 +163,8 @@ CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props 
     if (q.sensor && !was_sensor && (slot = cc__free_slot(w)) < 0)
         return CC_ERR_FULL;
     /* valid: from here on it changes, and callbacks may fire (ends of overlaps, push-aparts) */
-    w->busy = 1;
+    cc__world_own(w);
+    cc__enter(w);
     if (was_sensor != !!q.sensor)
         cc__sensor_forget(w, k, 0); /* a sensor that stops, or a visitor that becomes one: ends */
     if (q.restitution != w->restitution)
@@ -184,7 +185,7 @@ CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props 
         w->sensor_id[slot] = id;
     }
     cc__settle_props(w, k);
-    w->busy = 0;
+    cc__leave(w);
     return CC_OK;
 }
 
@@ -227,7 +228,7 @@ CC_API int cc_world_set_segment_props(cc_world *w, int id, const cc_segment_prop
     cc_segment_props q;
     if (!cc__world_ok(w) || in == NULL)
         return CC_ERR_INVALID;
-    if (w->busy)
+    if (cc__busy(w))
         return cc__world_code(w, CC_ERR_BUSY);
     if (in->struct_size < CC__END(cc_segment_props, restitution))
         return CC_ERR_VERSION;
@@ -249,6 +250,7 @@ CC_API int cc_world_set_segment_props(cc_world *w, int id, const cc_segment_prop
     if (!(w->uses & CC_USES_PROPS)) /* the world did not reserve walls' properties: what it is */
         return q.restitution == p->restitution && q.category == p->category && q.mask == p->mask ? CC_OK
                                                                                                    : CC_ERR_INVALID;
+    cc__world_own(w);
     if (q.restitution != w->restitution)
         w->features |= CC__F_RESTITUTION;
     if (q.category != 1u || q.mask != 0xFFFFFFFFu)

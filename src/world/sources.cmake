@@ -17,6 +17,7 @@ list(APPEND CC_WORLD_SOURCES
   world/exact.c     # EXACT stepping
   world/swept.c     # SWEPT stepping
   world/discrete.c  # DISCRETE stepping
+  world/sides.c     # SWEPT and DISCRETE: a centre that crossed a wall comes back to its side
   world/props.c     # per-body properties: the API, filters, restitution mixing
   world/sensor.c    # sensor circles: overlaps begun and ended
   world/query.c     # overlap queries: the circles in a disc or a box

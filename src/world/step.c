@@ -110,22 +110,24 @@ CC_API int cc_world_step(cc_world *w, double dt)
     uint64_t events;
     if (!cc__world_ok(w) || !(dt >= 0.0) || !isfinite(dt))
         return CC_ERR_INVALID;
-    if (w->busy)
+    if (cc__busy(w))
         return cc__world_code(w, CC_ERR_BUSY);
     if (!isfinite(w->now + dt))
         return cc__world_code(w, CC_ERR_RANGE);
     now = w->now;
     events = w->stats.events;
-    if (!cc__step_quick(w, dt, (now + dt) - now) && !cc__step_allowed(w, dt))
+    /* a copy taken inside a callback: its bounds may be those of a step half done (the pass) */
+    if (!(w->busy == 0 && cc__step_quick(w, dt, (now + dt) - now)) && !cc__step_allowed(w, dt))
         return cc__world_code(w, CC_ERR_RANGE);
-    w->busy = 1;
+    cc__world_own(w);
+    cc__enter(w);
     if (w->mode == CC_MODE_EXACT)
         r = cc__step_exact(w, w->now + dt);
     else if (w->mode == CC_MODE_SWEPT)
         r = cc__step_swept(w, dt);
     else
         r = cc__step_discrete(w, dt);
-    w->busy = 0;
+    cc__leave(w);
     /* every circle's |p| + |v| (now - t) grew by at most V times the time that passed (V as the
      * step's impulses left it), rounded up (a world at rest keeps its bound as it is) */
     if (w->now > now && w->speed > 0.0)

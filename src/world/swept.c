@@ -320,6 +320,9 @@ int cc__step_swept(cc_world *w, double dt)
         cc__heap_remove(w, i);
         w->stats.events++;
         w->now = e.t;
+        cc__keep_body_side(w, i); /* its path since its last impulse, a wall's missed included */
+        if (e.kind == CC__EV_CIRCLE)
+            cc__keep_body_side(w, e.partner);
         cc__advance_body(w, &B[i], e.t);
         tc.a = i;
         tc.b = -1;
@@ -335,6 +338,7 @@ int cc__step_swept(cc_world *w, double dt)
             ; /* no prediction again within the step: that is the mode */
     }
     w->now = t_end;
+    cc__keep_wall_sides(w, 0); /* a second impact missed may have been a wall's: the centre comes back */
     cc__sensor_pass(w);
     return CC_OK;
 }

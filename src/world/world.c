@@ -359,9 +359,9 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
  * exactly as during a step (the grid and queue are being updated). */
 static void cc__put_guarded(cc_world *w, int id, const cc_circle *c)
 {
-    w->busy = 1;
+    cc__enter(w);
     cc__put(w, id, c);
-    w->busy = 0;
+    cc__leave(w);
 }
 
 /* Periodic: a circle must leave room for its images ("at least twice the largest diameter plus
@@ -381,7 +381,7 @@ static int cc__put_refused(const cc_world *w, const cc_circle *c)
 {
     if (!cc__world_ok(w) || !cc__circle_ok(c))
         return CC_ERR_INVALID;
-    if (w->busy)
+    if (cc__busy(w))
         return cc__world_code(w, CC_ERR_BUSY);
     if (!cc__fits_period(w, c))
         return cc__world_code(w, CC_ERR_RANGE);
@@ -395,6 +395,7 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
         return r;
     if (w->n_circles >= w->max_circles)
         return CC_ERR_FULL;
+    cc__world_own(w);
     if (w->free_top > 0) { /* the last removed id (it keeps its storage index), off the free stack */
         id = w->free_head;
         w->free_head = CC__CARR(w, cc__cold, off_cold)[CC__CARR(w, int32_t, off_id2idx)[id]].prev;
@@ -423,7 +424,7 @@ CC_API int cc_world_add_circles(cc_world *w, const cc_circle *c, int n, int *ids
             *failed = -1;
         return CC_ERR_INVALID;
     }
-    if (w->busy) { /* no one circle is at fault */
+    if (cc__busy(w)) { /* no one circle is at fault */
         if (failed != NULL)
             *failed = -1;
         return cc__world_code(w, CC_ERR_BUSY);
@@ -464,6 +465,7 @@ CC_API int cc_world_set_circle(cc_world *w, int id, const cc_circle *c)
         return r;
     if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
+    cc__world_own(w);
     cc__unfile(w, k);
     cc__put_guarded(w, k, c);
     return CC_OK;
@@ -474,10 +476,11 @@ CC_API int cc_world_remove_circle(cc_world *w, int id)
     int k;
     if (!cc__world_ok(w))
         return CC_ERR_INVALID;
-    if (w->busy)
+    if (cc__busy(w))
         return cc__world_code(w, CC_ERR_BUSY);
     if ((k = cc__live(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
+    cc__world_own(w);
     cc__unfile(w, k);
     cc__sensor_forget(w, k, 1); /* a removed circle's overlaps are forgotten, not reported */
     CC__ARR(w, cc__cold, off_cold)[k].flags = 0;
@@ -492,10 +495,11 @@ CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s)
 {
     if (!cc__world_ok(w) || !cc__segment_ok(s))
         return CC_ERR_INVALID;
-    if (w->busy)
+    if (cc__busy(w))
         return cc__world_code(w, CC_ERR_BUSY);
     if (w->n_segments >= w->max_segments)
         return CC_ERR_FULL;
+    cc__world_own(w);
     CC__ARR(w, cc_segment, off_seg)[w->n_segments] = *s;
     if (cc__props_reserved(w)) {
         cc__segment_props *q = &CC__ARR(w, cc__segment_props, off_segprops)[w->n_segments];

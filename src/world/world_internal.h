@@ -131,7 +131,7 @@ struct cc_world {
     double cs, inv_cs; /* cell size in use and its inverse */
     int use_grid;     /* 0: all pairs (small worlds) */
     int dirty;        /* grid and events must be rebuilt before the next event */
-    int busy;         /* inside cc_world_step: the callback must not change the world */
+    uintptr_t busy;   /* while a call that fires callbacks runs: the world's own address (cc__busy) */
     int n_circles;    /* live circles */
     int n_segments;
     int id_end;       /* ids in [0, id_end) have been used at least once */
@@ -175,6 +175,29 @@ struct cc_world {
 
 /* Largest |cell coordinate|: cell bounds stay exact doubles, and no cell index overflows. */
 #define CC__CELL_MAX ((int32_t)1 << 30)
+
+/* ---- the re-entrancy guard ---- */
+/* While a call that may fire a callback runs (a step; an add, set or set_circle_props that
+ * pushes a pair apart), busy holds the world's own address, a number never followed, and the
+ * mutators refuse a world whose busy names itself. A copy of its bytes made meanwhile (a
+ * snapshot taken from inside a callback) names the memory it was copied from, not its own: it
+ * is not busy. The first call that changes such a copy takes it over (cc__world_own): the guard
+ * dropped, and what the interrupted call left half done (events not yet predicted again, a pass
+ * over overlaps, the bounds of what a step may reach) made whole by a rebuild at its time. A
+ * world whose busy names itself cannot be told from itself inside that call: a snapshot copied
+ * back over the very memory it was taken from, untouched, is busy (the header says so). */
+static inline uintptr_t cc__self(const cc_world *w) { return (uintptr_t)(const void *)w; }
+static inline int cc__busy(const cc_world *w) { return w->busy == cc__self(w); }
+static inline void cc__world_own(cc_world *w)
+{
+    if (w->busy != 0) {
+        w->busy = 0;
+        w->dirty = 1;
+        w->reach = HUGE_VAL; /* the pass over the circles measures it at the next step */
+    }
+}
+static inline void cc__enter(cc_world *w) { w->busy = cc__self(w); }
+static inline void cc__leave(cc_world *w) { w->busy = 0; }
 
 /* ---- roll.c: rolling to rest (issue 12) ---- */
 /* A body's state at time t along its rolling motion (w->features & CC__F_ROLL). */
@@ -506,6 +529,14 @@ void cc__sensor_pass(cc_world *w);
 void cc__rebuild(cc_world *w); /* grid, overlaps and (EXACT) every prediction, at w->now */
 void cc__settle_body(cc_world *w, int id); /* a body added or set: overlaps and predictions */
 void cc__settle_props(cc_world *w, int id); /* a body given other properties, where it is */
+/* sides.c: SWEPT and DISCRETE, at w->now: a centre whose path since its lazy state (or, with
+ * from_stash, since the position cc__side_stash kept) crossed a wall is put back on the side it
+ * came from, with the wall's impulse. cc__side_stash keeps every body's position now (in its
+ * event, which these modes do not use then) before the overlap pass pushes bodies apart. */
+void cc__keep_wall_sides(cc_world *w, int from_stash);
+void cc__side_stash(cc_world *w);
+/* The same for body i alone, from its lazy state (SWEPT, before it is carried to an impact). */
+void cc__keep_body_side(cc_world *w, int i);
 int cc__step_exact(cc_world *w, double t_end);
 int cc__step_swept(cc_world *w, double dt);
 int cc__step_discrete(cc_world *w, double dt);

@@ -74,6 +74,16 @@ def test_restitution_mix_of_a_circle_and_a_wall(mix, expected):
     assert c.pos == pytest.approx((4.0 - 2.0 * expected, 0.0), abs=1e-12)
 
 
+@pytest.mark.parametrize("mode", ["exact", "swept", "discrete"])
+@pytest.mark.parametrize("mix, expected", [("min", 0.9), ("max", 0.9), ("product", 0.9 * 0.9), ("mean", 0.9)])
+def test_the_default_restitution_is_mixed_as_any_value(mode, mix, expected):
+    # both sides keep restitution 0.9: the contact gets mix(0.9, 0.9), its square under product
+    w, cid, sid = wall_world(restitution=0.9, restitution_mix=mix, mode=mode)
+    for _ in range(600):
+        w.step(0.01)
+    assert w.circle(cid).vel == pytest.approx((-expected, 0.0), abs=1e-12)
+
+
 def test_a_walls_own_restitution_and_product_mix_of_two_circles():
     w, cid, sid = wall_world()
     w.set_segment_props(sid, restitution=0.25)  # min(1, 0.25)

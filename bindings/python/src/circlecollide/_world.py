@@ -154,7 +154,8 @@ class World:
     ``mode`` is ``"exact"`` (every collision in time order), ``"swept"`` or ``"discrete"``;
     ``restitution`` in [0, 1] is what new circles and walls get (``set_circle_props`` and
     ``set_segment_props`` change it per body), and ``restitution_mix`` (``"min"``, ``"max"``,
-    ``"product"`` or ``"mean"``) makes a contact's from its two sides'. ``rolling_decel`` (>= 0)
+    ``"product"`` or ``"mean"``) makes a contact's from its two sides' (between two sides that
+    keep ``restitution``: that value, or its square under ``"product"``). ``rolling_decel`` (>= 0)
     is the deceleration new movable circles get (rolling to rest). ``period=(px, py)``: a
     component > 0 makes the world wrap along that axis (positions kept in [0, period)).
 
@@ -175,7 +176,9 @@ class World:
     world in the same state (a copy of the C memory, which is position-independent), with the
     same callbacks (deep-copied by ``deepcopy``); ``pickle`` carries a world made without
     callbacks to another process (one made with callbacks refuses: ``TypeError``). A copy or an
-    unpickled world steps bit for bit as the original would.
+    unpickled world steps bit for bit as the original would. A copy made inside a callback is
+    the world as the callback sees it, a world of its own at once (the C header's "Snapshots":
+    it goes on from that contact, not bit for bit as the original).
     """
 
     def __init__(
@@ -308,14 +311,16 @@ class World:
             raise _errors.invalid(
                 what,
                 f"{what} called from a callback (on_contact/on_sensor): the world is in the middle of a call; "
-                "copy it after the call that fired the callback returns",
+                f"{what} it after the call that fired the callback returns",
             )
 
     def _memory(self) -> bytes:
         return ctypes.string_at(self._addr, self._size)
 
     def _clone(self, on_contact: Optional[ContactCallback], on_sensor: Optional[SensorCallback]) -> "World":
-        self._refuse_mid_call("copy")
+        # also from inside a callback: the C world is busy only at its own address, so the copy
+        # (other memory) is a world of its own, the world as the callback sees it (header:
+        # "Snapshots")
         new = World(**self._def_args, callbacks=self._callbacks)
         if new._size != self._size:  # the same library, the same def: cannot happen
             raise RuntimeError(f"circlecollide: a copy's world has {new._size} bytes, the original {self._size}")

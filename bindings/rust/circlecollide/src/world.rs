@@ -61,8 +61,9 @@ pub struct WorldDef {
     pub max_segments: usize,
     /// How the world advances (default [`Mode::Exact`]).
     pub mode: Mode,
-    /// Coefficient of restitution of every contact, in [0, 1]; since 1.1 the restitution a new
-    /// circle or wall gets (its properties may then change it).
+    /// The restitution, in [0, 1], that every new circle and wall gets (its properties may then
+    /// change it); a contact's is [`WorldDef::restitution_mix`] of its two sides': between two
+    /// sides that keep it, this value for `Min`, `Max` and `Mean`, its square for `Product`.
     pub restitution: f64,
     /// Approach speeds below this collide with restitution 0.
     pub rest_speed: f64,
