@@ -257,11 +257,24 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           even into its own block, so a world may be copied (memcpy) to other 8-byte aligned
  *           memory of the same size and used from there (while a call that fires callbacks
  *           runs it holds its own address as a number, never followed: see "Snapshots"). It keeps no pointer to the caller's
- *           defs, circles or segments (it copies them). About 225 bytes per circle (one 64-byte
- *           line of hot state, the predicted event, queue and grid entries, and 56 bytes of
- *           properties that only a world using them reads) plus about 200 per wall (the wall, its
- *           properties and its place in the walls' tree);
- *           EXACT adds one block of at most 15 KB for simultaneous impacts (see below).
+ *           defs, circles or segments (it copies them). About 160 to 170 bytes per circle in
+ *           EXACT for a world of def.uses = 0 (one 64-byte line of hot state, the predicted
+ *           event, queue and grid entries; 150 to 160 in SWEPT and DISCRETE), 48 more where uses
+ *           lists CC_USES_PROPS, SENSORS or ROLLING (the properties: every world of a 1.0 or 1.1
+ *           def, and the default), 8 more in a periodic world (its count of turns); plus about
+ *           200 per wall (the wall and its place in the walls' tree, and with those uses its
+ *           properties); EXACT adds one block of at most 15 KB for simultaneous impacts (see
+ *           below).
+ * Uses      def.uses (CC_USES_*, 1.2) lists what a world may use, and cc_world_size reserves
+ *           memory only for that. A call that needs what the world did not reserve returns
+ *           CC_ERR_INVALID and changes nothing: cc_world_set_circle_props that would give a
+ *           circle another restitution, category or mask without CC_USES_PROPS, another rolling
+ *           deceleration without PROPS or ROLLING, or make or unmake a sensor without
+ *           CC_USES_SENSORS; cc_world_set_segment_props that would change a wall's without
+ *           PROPS; a def with rolling_decel > 0 without CC_USES_ROLLING is invalid (size 0).
+ *           Reading properties gives the defaults, and setting the values a body has is CC_OK.
+ *           uses = 0 is 1.0's world: the least memory and the fastest path; a scene that uses
+ *           nothing more runs bit for bit alike (the same hash) with uses = 0 and CC_USES_ALL.
  * Snapshots A memcpy of the world is a snapshot wherever it is taken, also from inside a
  *           callback: a world is busy (its mutators and cc_world_step refused: CC_ERR_BUSY, or
  *           CC_ERR_INVALID for a 1.0 or 1.1 def) only at
@@ -725,7 +738,8 @@ CC_API int cc_world_get_circle_props(const cc_world *w, int id, cc_circle_props 
  * others keep their current value), at the current world time. CC_OK; CC_ERR_INVALID (NULL, a
  * value out of range), CC_ERR_BUSY (called from a callback) or CC_ERR_VERSION (struct_size too
  * small), and nothing changed; CC_ERR_NOT_FOUND; CC_ERR_FULL when it would make a sensor of the
- * world's CC_MAX_SENSORS + 1st. */
+ * world's CC_MAX_SENSORS + 1st. CC_ERR_INVALID too, nothing changed, for a change that needs what
+ * the world's def.uses did not reserve (see "Uses" above). */
 CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props *p);
 
 /* The same for wall id. */

@@ -143,6 +143,29 @@ static void test_calls_that_need_an_unreserved_use_are_refused(void)
     tw_free(&m);
 }
 
+/* The readers that look at properties (casts and queries filter by category) find the defaults
+ * in a world without them, as a world of ALL has them. */
+static void test_casts_and_queries_see_the_default_categories(void)
+{
+    unsigned k;
+    for (k = 0; k < 2; k++) {
+        tw_mem m;
+        cc_world *w = busy_world(&m, k ? CC_USES_ALL : 0u);
+        cc_query_filter f1 = {sizeof(cc_query_filter), 1u, -1}, f2 = {sizeof(cc_query_filter), 2u, -1};
+        cc_cast_hit hit;
+        int ids[4];
+        /* down onto the wall at y = -2, between the circles */
+        TEST_ASSERT_EQUAL_INT(CC_HIT, cc_world_cast_circle_filtered(w, tw_vec2(-4.0, 0.0), 0.25, tw_vec2(0.0, -10.0),
+                                                                    &f1, &hit));
+        TEST_ASSERT_EQUAL_INT(0, hit.segment);
+        TEST_ASSERT_EQUAL_INT(CC_MISS, cc_world_cast_circle_filtered(w, tw_vec2(-4.0, 0.0), 0.25, tw_vec2(0.0, -10.0),
+                                                                     &f2, &hit));
+        TEST_ASSERT_EQUAL_INT(2, cc_world_query_circle_filtered(w, tw_vec2(1.5, 0.0), 10.0, &f1, ids, 4));
+        TEST_ASSERT_EQUAL_INT(0, cc_world_query_circle_filtered(w, tw_vec2(1.5, 0.0), 10.0, &f2, ids, 4));
+        tw_free(&m);
+    }
+}
+
 /* Each use allows its own calls and still refuses the others'. */
 static void test_each_use_allows_its_own_calls(void)
 {
@@ -294,6 +317,7 @@ int main(void)
     RUN_TEST(test_the_size_shrinks_with_uses);
     RUN_TEST(test_a_def_beyond_its_uses_is_refused);
     RUN_TEST(test_calls_that_need_an_unreserved_use_are_refused);
+    RUN_TEST(test_casts_and_queries_see_the_default_categories);
     RUN_TEST(test_each_use_allows_its_own_calls);
     RUN_TEST(test_a_plain_scene_runs_alike_with_and_without_reserves);
     RUN_TEST(test_turns_follow_their_circles_through_sorting);

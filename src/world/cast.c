@@ -121,8 +121,8 @@ static void cc__cast_walls(cc__cast *c)
         cc_vec2 n;
         double t;
         int r;
-        if (!(sp[s].category & c->mask))
-            continue;
+        if (!((w->features & CC__F_FILTER) ? sp[s].category & c->mask : c->mask & 1u))
+            continue; /* (no filter set: every wall has category 1, and a world may have no props) */
         if (c->r > 0.0) {
             cc_circle k;
             cc_contact hit;

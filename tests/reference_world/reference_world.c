@@ -566,7 +566,8 @@ int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, rw_senso
 {
     if (w == NULL || def == NULL || def->mode != CC_MODE_EXACT || def->max_circles < 0 ||
         def->max_circles > RW_MAX_CIRCLES || def->max_segments < 0 || def->max_segments > RW_MAX_SEGMENTS ||
-        !(def->restitution >= 0.0 && def->restitution <= 1.0) || !(def->rest_speed >= 0.0))
+        !(def->restitution >= 0.0 && def->restitution <= 1.0) || !(def->rest_speed >= 0.0) ||
+        (def->rolling_decel > 0.0 && !(def->uses & CC_USES_ROLLING))) /* the header's uses rule */
         return CC_ERR_INVALID;
     memset(w, 0, sizeof *w);
     w->restitution = def->restitution;

@@ -30,6 +30,7 @@ C_TYPES = {
     "size_t": ctypes.c_size_t,
     "uint64_t": ctypes.c_uint64,
     "uint32_t": ctypes.c_uint32,
+    "unsigned": ctypes.c_uint,
     "void*": ctypes.c_void_p,
     "double*": ctypes.POINTER(ctypes.c_double),
     "cc_contact_fn": _lib.cc_contact_fn,
@@ -83,6 +84,7 @@ SCALARS = {
     "long": ctypes.c_long,
     "size_t": ctypes.c_size_t,
     "uint32_t": ctypes.c_uint32,
+    "unsigned": ctypes.c_uint,
     "uint64_t": ctypes.c_uint64,
     "void": None,
 }

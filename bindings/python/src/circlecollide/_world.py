@@ -158,6 +158,11 @@ class World:
     keep ``restitution``: that value, or its square under ``"product"``). ``rolling_decel`` (>= 0)
     is the deceleration new movable circles get (rolling to rest). ``period=(px, py)``: a
     component > 0 makes the world wrap along that axis (positions kept in [0, period)).
+    ``uses`` (``USES_*`` bits, default ``USES_ALL``): what the world may use; its memory holds
+    no more (``uses=0``, 1.0's world, is the smallest and fastest), and a call that needs what
+    it left out (``set_circle_props`` with a restitution, filter, deceleration or sensor,
+    ``set_segment_props``, ``rolling_decel`` without ``USES_ROLLING``) raises
+    CircleCollideError (CC_ERR_INVALID), the world unchanged.
 
     ``on_contact``, if given, is called with a ``ContactEvent`` for every impulse, and
     ``on_sensor`` with a ``SensorEvent`` for every sensor begin and end; both are also plain
@@ -197,6 +202,7 @@ class World:
         on_sensor: Optional[SensorCallback] = None,
         period: Iterable[float] = (0.0, 0.0),
         callbacks: Optional[bool] = None,
+        uses: int = _lib.USES_ALL,
     ) -> None:
         for name, v, names in (("mode", mode, MODES), ("restitution_mix", restitution_mix, MIXES)):
             if not isinstance(v, str):
@@ -224,6 +230,11 @@ class World:
         if px < 0 or py < 0:
             raise _errors.invalid("World", f"period must be >= 0 (0: open), got ({_errors.show(px)}, {_errors.show(py)})")
         d.period = _lib.cc_vec2(px, py)
+        if not 0 <= _errors.integer(uses, "uses", "World") <= _lib.USES_ALL:
+            raise _errors.invalid("World", f"uses must be USES_* bits in [0, USES_ALL], got {uses!r}")
+        d.uses = int(uses)
+        if d.rolling_decel != 0.0 and not d.uses & _lib.USES_ROLLING:
+            raise _errors.invalid("World", "rolling_decel needs uses to include USES_ROLLING")
         # a library older than these declarations ignores the fields beyond its def: refuse to
         # drop a setting silently
         asked = {
@@ -231,6 +242,7 @@ class World:
             "restitution_mix": d.restitution_mix != _lib.MIX_MIN,
             "on_sensor": on_sensor is not None,
             "period": (px, py) != (0.0, 0.0),
+            "uses": d.uses != _lib.USES_ALL,
         }
         for name, wanted in asked.items():
             if wanted and self._lib_def_size < _lib.field_end(_lib.cc_world_def, name):
@@ -282,6 +294,7 @@ class World:
             rolling_decel=d.rolling_decel,
             restitution_mix=restitution_mix,
             period=(px, py),
+            uses=d.uses,
         )
         self.max_circles = d.max_circles
         self.max_segments = d.max_segments

@@ -81,7 +81,23 @@ pub struct WorldDef {
     /// [0, period); 0 leaves the axis open (default (0, 0)). Each period must be at least twice
     /// the largest circle diameter plus a cell. See [`World::unwrapped`].
     pub period: Vec2,
+    /// What the world may use (default [`USES_ALL`]): `USES_*` bits. Its memory holds no more
+    /// (0, 1.0's world, is the smallest and fastest), and a call that needs what it left out
+    /// (properties other than the defaults, a sensor, `rolling_decel` without
+    /// [`USES_ROLLING`]) is refused with `CC_ERR_INVALID`, the world unchanged.
+    pub uses: u32,
 }
+
+/// [`WorldDef::uses`]: per-body properties (restitution, filters, per-circle deceleration).
+pub const USES_PROPS: u32 = sys::CC_USES_PROPS;
+/// [`WorldDef::uses`]: sensor circles.
+pub const USES_SENSORS: u32 = sys::CC_USES_SENSORS;
+/// [`WorldDef::uses`]: `rolling_decel` or per-circle deceleration.
+pub const USES_ROLLING: u32 = sys::CC_USES_ROLLING;
+/// [`WorldDef::uses`]: spin (cloth).
+pub const USES_CLOTH: u32 = sys::CC_USES_CLOTH;
+/// [`WorldDef::uses`]: everything (the default).
+pub const USES_ALL: u32 = sys::CC_USES_ALL;
 
 impl Default for WorldDef {
     fn default() -> Self {
@@ -106,6 +122,7 @@ impl Default for WorldDef {
                 _ => RestitutionMix::Min,
             },
             period: Vec2::new(d.period.x, d.period.y),
+            uses: d.uses,
         }
     }
 }
@@ -534,6 +551,7 @@ impl<'cb> World<'cb> {
         d.rolling_decel = def.rolling_decel;
         d.restitution_mix = def.restitution_mix.to_c();
         d.period = sys::cc_vec2 { x: def.period.x, y: def.period.y };
+        d.uses = def.uses;
         let (has_contact, has_sensor) = (cb.is_some(), sensor_cb.is_some());
         let slot = if has_contact || has_sensor {
             Box::into_raw(Box::new(Slot { f: cb, sensor: sensor_cb, panic: None }))
@@ -1023,6 +1041,9 @@ fn def_refusal(status: c_int, def: &WorldDef) -> Error {
         (def.max_events == 0).then(|| "max_events must be >= 1, got 0".to_string()),
         cause::nonneg_finite("period.x", def.period.x),
         cause::nonneg_finite("period.y", def.period.y),
+        (def.uses > USES_ALL).then(|| format!("uses = {:#x} has bits beyond USES_ALL", def.uses)),
+        (def.rolling_decel > 0.0 && def.uses & USES_ROLLING == 0)
+            .then(|| "rolling_decel > 0 needs uses to include USES_ROLLING".to_string()),
     ];
     if let Some(detail) = causes.into_iter().flatten().next() {
         return Error::new(code, CALL, detail);
