@@ -164,6 +164,13 @@ class World:
     ``set_segment_props``, ``rolling_decel`` without ``USES_ROLLING``) raises
     CircleCollideError (CC_ERR_INVALID), the world unchanged.
 
+    ``max_events`` (an int >= 1) caps the events of one exact ``step``; ``None`` (the default)
+    follows the C default, the automatic cap of 32 events per circle of ``max_circles`` and at
+    least 10,000 (the C header's "Collapse"), sized so that a step that jams returns within
+    about 0.2 s for 1,000 circles; ``step`` returns False at the cap. A long offline step (a
+    whole run in one call) passes a larger cap or steps again to the same end time
+    (``circlecollide.hard_disks.advance``).
+
     ``on_contact``, if given, is called with a ``ContactEvent`` for every impulse, and
     ``on_sensor`` with a ``SensorEvent`` for every sensor begin and end; both are also plain
     attributes, settable at any time on a world that has them: ``callbacks`` (default: whether
