@@ -374,12 +374,12 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           it). How long a capped step takes: the events of a step that jams (see "Pushing")
  *           cost 6 to 12 us each on a desktop core, 50 to 70 times an event of a plain gas
  *           (bench_world jam), so the automatic cap ends a jammed step of 100 circles in about
- *           0.08 s and one of 1,000 in about 0.2 s (ten times that under a sanitizer), while a
- *           cap of 1e7 runs about 100 s. Ordinary steps stay far below it: a periodic gas of
- *           1,000 disks stepped 4 collisions per disk per call takes at most 3.4 events per
- *           circle, a pool break in one call 91 events. A long offline step (a whole run in one
- *           call, a circle crossing thousands of cells) sets a larger cap or steps again while
- *           the result is CC_EVENT_LIMIT.
+ *           0.08 s and one of 1,000 in about 0.2 s (0.2 s and 0.7 s under AddressSanitizer),
+ *           while a cap of 1e7 runs about 100 s. Ordinary steps stay far below it: a periodic
+ *           gas of 1,000 disks stepped 4 collisions per disk per call takes at most 3.4 events
+ *           per circle, a pool break in one call 91 events. A long offline step (a whole run in
+ *           one call, a circle crossing thousands of cells) sets a larger cap, or steps again
+ *           by what is left of its dt while the result is CC_EVENT_LIMIT.
  * Simultaneous  In EXACT, an impact is resolved together with everything touching the two
  *           bodies at that instant: circles and walls whose gap is below 2^-40 of the size of
  *           the numbers involved (coordinates, radii, speeds times |world time|), found
