@@ -5,6 +5,7 @@
  *
  *   bench_queries casts [--quick]   cast and query cost, N = 1e3 .. 1e6 (1e5 with --quick)
  *   bench_queries walls [--quick]   the gas with 4 walls and with 10,000 short walls outside it
+ *   bench_queries periodic [--quick]  periodic casts in each mode against the walled cast
  *   bench_queries filter [--quick]  casts and queries unfiltered, _filtered passing all, and
  *                                   _filtered with ignore= (gas of 10,000; 5,000 with --quick) */
 #include "bench_scenes.h"
@@ -170,6 +171,86 @@ static int cmd_walls(int quick)
     return 0;
 }
 
+/* A gas of n circles in its walled box (EXACT) and in a periodic box of the same side, in each
+ * mode, after one step: ns per ray cast 10 radii long (a few cells, now and then across the
+ * edge) and per ray three periods long, from random points; medians over rounds, the spread of
+ * each, and the ratio to the walled EXACT cast of the same length measured in the same run. A
+ * periodic cast walks every image along its path (in SWEPT and DISCRETE, or in EXACT past a
+ * cell per circle, every circle each half period of the path). */
+static double cast_ns(const cc_world *w, double L, double len, int per, uint64_t seed)
+{
+    bench_rng rng;
+    cc_cast_hit h;
+    double t0;
+    int k, hits = 0;
+    rng.s = seed;
+    t0 = bench_now();
+    for (k = 0; k < per; k++) {
+        cc_vec2 p, d;
+        double ang = bench_uniform(&rng, 0.0, 6.283185307179586);
+        p.x = bench_uniform(&rng, 0.1, 0.9) * L, p.y = bench_uniform(&rng, 0.1, 0.9) * L;
+        d.x = len * cos(ang), d.y = len * sin(ang);
+        hits += cc_world_cast_circle(w, p, 0.0, d, 0xFFFFFFFFu, &h) != CC_MISS;
+    }
+    (void)hits;
+    return (bench_now() - t0) * 1e9 / per;
+}
+
+static int cmd_periodic(int quick)
+{
+    enum { ROUNDS_MAX = 16 };
+    static const char *names[4] = {"walled, EXACT", "periodic, EXACT", "periodic, SWEPT", "periodic, DISCRETE"};
+    int n = quick ? 1000 : 10000, rounds = quick ? 3 : 7, v, r, l;
+    double ns[2][4][ROUNDS_MAX], lo, hi, base[2];
+    bench_scene s;
+    cc_world *w[4];
+    void *mem[4];
+    bench_scene_gas(&s, n, 0.3, 13);
+    for (v = 0; v < 4; v++) {
+        cc_world_def d;
+        int i;
+        cc_world_def_init(&d);
+        d.max_circles = n;
+        d.max_segments = 4;
+        d.mode = v == 0 ? CC_MODE_EXACT : v - 1;
+        if (v > 0)
+            d.period.x = d.period.y = s.x1;
+        mem[v] = bench_alloc(cc_world_size(&d));
+        w[v] = cc_world_init(mem[v], cc_world_size(&d), &d, NULL);
+        for (i = 0; i < n; i++)
+            cc_world_add_circle(w[v], &s.c[i]);
+        for (i = 0; v == 0 && i < 4; i++)
+            cc_world_add_segment(w[v], &s.walls[i]);
+        cc_world_step(w[v], 0.05);
+    }
+    for (r = 0; r < rounds; r++)
+        for (l = 0; l < 2; l++)
+            for (v = 0; v < 4; v++) /* every variant in each round, so that drifts hit them alike */
+                /* (SWEPT and DISCRETE look at every circle: fewer casts, the same time a round) */
+                ns[l][v][r] = cast_ns(w[v], s.x1, l == 0 ? 10.0 * s.r_typ : 3.0 * s.x1, v < 2 ? 20000 : 20000 * 100 / n + 100,
+                                      99u + (uint64_t)r);
+    printf("%-22s %-18s %12s %22s %10s\n", "world", "ray", "ns/cast", "spread", "x walled");
+    for (l = 0; l < 2; l++) {
+        base[l] = bench_median(ns[l][0], (size_t)rounds);
+        for (v = 0; v < 4; v++) {
+            double med = bench_median(ns[l][v], (size_t)rounds);
+            bench_range(ns[l][v], (size_t)rounds, &lo, &hi);
+            printf("%-22s %-18s %12.1f %10.1f - %-9.1f %10.2f\n", names[v], l == 0 ? "10 radii" : "3 periods", med, lo, hi,
+                   med / base[l]);
+            if (v > 0) {
+                char name[64];
+                snprintf(name, sizeof name, "periodic_cast_%s_%s_vs_walled", l == 0 ? "short" : "long",
+                         v == 1 ? "exact" : v == 2 ? "swept" : "discrete");
+                bench_figure(name, med / base[l]);
+            }
+        }
+    }
+    for (v = 0; v < 4; v++)
+        free(mem[v]);
+    bench_scene_free(&s);
+    return 0;
+}
+
 /* The query filter (1.2): each cast and query as the 1.1 call (a mask), as its _filtered twin
  * with a filter that passes everything (CC_QUERY_FILTER_DEFAULT), with ignore= a circle far from
  * every path (the one farthest from the box's centre: the same answers, the filter's own cost), and
@@ -295,8 +376,10 @@ int main(int argc, char **argv)
         return cmd_casts(quick);
     if (argc >= 2 && !strcmp(argv[1], "walls"))
         return cmd_walls(quick);
+    if (argc >= 2 && !strcmp(argv[1], "periodic"))
+        return cmd_periodic(quick);
     if (argc >= 2 && !strcmp(argv[1], "filter"))
         return cmd_filter(quick);
-    fprintf(stderr, "usage: %s casts|walls|filter [--quick]\n", argv[0]);
+    fprintf(stderr, "usage: %s casts|walls|periodic|filter [--quick]\n", argv[0]);
     return 2;
 }

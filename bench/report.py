@@ -264,7 +264,7 @@ def main():
     idle = rows(os.path.join(res, "idle.csv"))
     figs = {}
     for name in ("pair.txt", "headline.txt", "features.txt", "idle.txt", "scaling.txt", "matrix.txt", "casts.txt",
-                 "walls.txt", "exact.txt", "rolling.txt"):
+                 "walls.txt", "periodic_casts.txt", "exact.txt", "rolling.txt"):
         figs.update(figures(read(os.path.join(res, name))))
     peers = peers_table(read(os.path.join(res, "peers.txt")))
     if matrix:
@@ -489,16 +489,21 @@ def main():
 
     # ---- queries and walls (bench_queries)
     casts, walls = read(os.path.join(res, "casts.txt")), read(os.path.join(res, "walls.txt"))
-    if casts or walls:
+    periodic = read(os.path.join(res, "periodic_casts.txt"))
+    if casts or walls or periodic:
         w("## 6. Queries and walls at scale")
         w("")
         w("Casts (a ray, and a circle of radius 0.5, over 10 units) and disc queries (radius 1.5) from random "
           "points of the gas at area fraction 0.3, in worlds of growing N at the same density: the cost "
           "follows the region a query covers, not the world (ratios to N = 1000). Then the gas of 10,000 "
           "circles with its 4 walls, and with 10,000 short walls on rings outside the box that no circle "
-          "reaches (the same collisions): the walls' tree keeps the cost per collision close.")
+          "reaches (the same collisions): the walls' tree keeps the cost per collision close. Last, ray casts "
+          "in that gas (10,000 circles) made periodic, in each mode after one step, against the walled gas's EXACT "
+          "cast of the same length (10 radii, and three periods): a periodic cast sees every image along its "
+          "path, through the grid in EXACT, and in SWEPT and DISCRETE (no grid between steps) by every "
+          "circle's images in each half period of the path.")
         w("")
-        for text in (casts, walls):
+        for text in (casts, walls, periodic):
             if text:
                 w("```")
                 w("\n".join(l for l in text.splitlines() if not l.startswith("figure ")))

@@ -50,6 +50,7 @@ if [ $quick = 1 ]; then
   "$bin/bench_idle" --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" casts --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" walls --quick | tee -a "$log" | grep '^figure '
+  "$bin/bench_queries" periodic --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_queries" filter --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_bulk" add --quick | tee -a "$log" | grep '^figure '
   "$bin/bench_exact" --quick | tee -a "$log" | grep '^figure '
@@ -98,6 +99,7 @@ echo "== world: a step with nothing to do (N circles at rest, or moving slowly, 
 echo "== queries and walls at scale" | tee -a "$log"
 "$bin/bench_queries" casts | tee "$out/casts.txt"
 "$bin/bench_queries" walls | tee "$out/walls.txt"
+"$bin/bench_queries" periodic | tee "$out/periodic_casts.txt"
 echo "== the 1.2 calls: the batch add against single adds, the query filter against the 1.1 calls" | tee -a "$log"
 "$bin/bench_bulk" add | tee "$out/bulk.txt"
 "$bin/bench_queries" filter | tee "$out/filter.txt"

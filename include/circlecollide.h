@@ -609,10 +609,14 @@ CC_API int cc_world_get_segment(const cc_world *w, int id, cc_segment *out);
  * away from its edges. A periodic world always has a grid, also with max_circles <= 32. SWEPT
  * and DISCRETE take the nearest image of each pair: a step must not carry a circle half a
  * period (SWEPT refuses such a step: CC_ERR_RANGE, nothing changes). Casts see every image
- * along their path; queries report each circle once (its image nearest the query; a query box
+ * along their path, in every mode, before the first step as after it, whatever period the path
+ * starts in; queries report each circle once (its image nearest the query; a query box
  * as wide as the period holds every coordinate along it). Beyond about 1e15 periods from the
  * origin a coordinate has lost its place within the period: a cast from there looks at every
- * circle's nearest image and may hit or miss, at the cost of one look at each. */
+ * circle's nearest image and may hit or miss, at the cost of one look at each; so does a cast
+ * that would look at more than 16384 images of each circle (its path cut in pieces half a period
+ * long, or its radius long when wider, times the images each piece's box holds: a path of some
+ * 8,000 periods, or a radius of some 60), so that its cost stays bounded. */
 
 /* Rolling to rest (1.1): a movable circle with a deceleration a > 0 (def.rolling_decel, or its
  * own cc_circle_props.rolling_decel) slows along its direction of motion and stops: moving at
@@ -750,7 +754,9 @@ CC_API int cc_world_set_segment_props(cc_world *w, int id, const cc_segment_prop
 /* Questions put to the world as it is at the current time, everything held still. They read the
  * world only (and may be called from a callback); their cost follows the region they cover, not
  * the size of the world (in EXACT, between steps; in SWEPT and DISCRETE, and before a world's
- * first step, every circle is looked at). Positions are those cc_world_get_circle gives. */
+ * first step, every circle is looked at: by a periodic cast, once for each half period of its
+ * path, as in EXACT by one longer than a cell per circle). Positions are those
+ * cc_world_get_circle gives. */
 
 typedef struct cc_cast_hit {
     int circle;     /* id of the circle hit, or -1 */

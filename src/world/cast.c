@@ -141,6 +141,57 @@ static void cc__cast_walls(cc__cast *c)
     }
 }
 
+/* How many images of each circle a periodic cast may look at: the path, widened by the radius,
+ * may cross about this many period cells (2^13 periods along its length, or a radius of some 60
+ * periods across). Beyond it a cast looks at each circle's nearest image to the middle of its
+ * path, once (the header's "Periodic boxes"), so that its cost stays bounded. */
+#define CC__CAST_IMAGES 16384.0
+
+/* The pieces the path is walked in: a cell long (or the cast's radius, when wider) through a
+ * current grid, at most one per circle (a longer path is walked in pieces half a period long, as
+ * without a grid: cc__visit_region gives every circle's images in each); one piece for an open
+ * world without a grid (every circle once: no images to find); 0 for a periodic cast that would
+ * look at more than CC__CAST_IMAGES images of each circle, counted on pieces half a period (or
+ * the radius) long whatever the mode or state, so that which casts see every image is one rule. */
+static long cc__cast_pieces(const cc_world *w, cc_vec2 d, double radius, double len)
+{
+    double piece, n, looks = 1.0, pmin = HUGE_VAL;
+    int k;
+    if (w->features & CC__F_PERIODIC) {
+        for (k = 0; k < 2; k++)
+            if (w->period[k] > 0.0 && w->period[k] < pmin)
+                pmin = w->period[k];
+        piece = 0.5 * pmin > radius ? 0.5 * pmin : radius;
+        n = len / piece < 1.0 ? 1.0 : ceil(len / piece);
+        /* a circle fits its period three times over (cc__fits_period): its radius is below pmin / 4 */
+        for (k = 0; k < 2; k++)
+            if (w->period[k] > 0.0)
+                looks *= (fabs(k == 0 ? d.x : d.y) / n + 2.0 * (radius + 0.25 * pmin)) / w->period[k] + 2.0;
+        if (!(n * looks <= CC__CAST_IMAGES))
+            return 0;
+    } else {
+        n = 1.0;
+    }
+    if (cc__grid_current(w)) {
+        piece = w->cs > radius ? w->cs : radius;
+        if (len / piece < (double)w->id_end)
+            return len / piece < 1.0 ? 1 : (long)ceil(len / piece);
+    }
+    return (long)n;
+}
+
+/* Each circle's nearest image to the middle of the path, once. */
+static void cc__cast_nearest(cc__cast *c)
+{
+    const cc_world *w = c->w;
+    const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
+    cc_vec2 m = cc__advance(c->p, c->d, 0.5);
+    int j;
+    for (j = 0; j < w->id_end; j++)
+        if (C[j].flags & CC__ALIVE)
+            cc__visit_nearest(w, j, m.x, m.y, cc__cast_visit, c);
+}
+
 CC_API int cc_world_cast_circle(const cc_world *w, cc_vec2 p, double radius, cc_vec2 d, uint32_t mask,
                                 cc_cast_hit *out)
 {
@@ -152,7 +203,7 @@ CC_API int cc_world_cast_circle_filtered(const cc_world *w, cc_vec2 p, double ra
                                          const cc_query_filter *filter, cc_cast_hit *out)
 {
     cc__cast c;
-    double len, piece;
+    double len;
     long k, pieces;
     if (w == NULL || w->magic != CC__WORLD_MAGIC || out == NULL || !cc__vec_ok(p) || !cc__vec_ok(d) ||
         !(radius >= 0.0) || !isfinite(radius))
@@ -168,17 +219,18 @@ CC_API int cc_world_cast_circle_filtered(const cc_world *w, cc_vec2 p, double ra
     c.touch = c.wall = 1;
     c.id = INT32_MAX;
     cc__cast_walls(&c);
-    /* pieces a cell long (or the cast's radius, when wider), at most one per circle */
     len = cc__length(d);
-    piece = cc__grid_current(w) ? (w->cs > radius ? w->cs : radius) : HUGE_VAL;
-    pieces = len / piece < (double)w->id_end ? (long)ceil(len / piece) : 1;
-    if (pieces < 1)
-        pieces = 1;
+    pieces = cc__cast_pieces(w, d, radius, len);
+    if (pieces == 0) { /* beyond the images it looks at: each circle's nearest to the path's middle */
+        cc__cast_nearest(&c);
+    }
     for (k = 0; k < pieces; k++) {
         double t0 = (double)k / (double)pieces, t1 = (double)(k + 1) / (double)pieces;
         cc_vec2 a = cc__advance(p, d, t0), b = cc__advance(p, d, t1);
-        /* the piece's box grown by the radius, and by far more than the rounding of a and b */
-        double g = radius + 0x1p-30 * (fabs(a.x) + fabs(a.y) + fabs(b.x) + fabs(b.y) + radius);
+        /* the piece's box grown by the radius, and by far more than the rounding of a and b
+         * (2^-40 of them: thousands of ulps, and few enough that a periodic box holds no more
+         * images than its width gives it) */
+        double g = radius + 0x1p-40 * (fabs(a.x) + fabs(a.y) + fabs(b.x) + fabs(b.y) + radius);
         cc__visit_region(w, (a.x < b.x ? a.x : b.x) - g, (a.y < b.y ? a.y : b.y) - g, (a.x < b.x ? b.x : a.x) + g,
                          (a.y < b.y ? b.y : a.y) + g, 1, cc__cast_visit, &c);
         if (c.t < t1)

@@ -268,8 +268,22 @@ static void cc__settle_after(cc_world *w, int id)
     cc__predict_neighbours(w, id);
 }
 
+/* One rule for every mode and state: a body put or given properties has its sensor overlaps
+ * brought up to date where it is, from inside that call. Only EXACT with a current grid also
+ * pushes it apart and predicts it at once; elsewhere (SWEPT, DISCRETE, before the first step,
+ * after a wall was added) that waits for the next step, which files everything again, but the
+ * sensors' begins and ends cannot: the header gives them "at once". */
+static int cc__settles_now(const cc_world *w)
+{
+    return w->mode == CC_MODE_EXACT && !w->dirty;
+}
+
 void cc__settle_body(cc_world *w, int id)
 {
+    if (!cc__settles_now(w)) {
+        cc__sensor_refresh(w, id);
+        return;
+    }
     cc__grid_insert(w, id);
     cc__unoverlap_body(w, id, 0);
     cc__settle_after(w, id);
@@ -281,12 +295,10 @@ void cc__settle_props(cc_world *w, int id)
         cc__advance_body(w, &CC__ARR(w, cc__body, off_body)[id], w->now);
         cc__roll_reset(w, id);
     }
-    if (w->mode != CC_MODE_EXACT) {
+    if (!cc__settles_now(w)) {
         cc__sensor_refresh(w, id);
-        return; /* the other modes look at everything again at each step */
+        return; /* the rest waits for the next step, which looks at everything again */
     }
-    if (w->dirty)
-        return; /* the next step's rebuild does it all */
     /* where it is: others' predictions with it go stale, pairs that now interact are pushed
      * apart, and everything about it is predicted again */
     cc__advance_body(w, &CC__ARR(w, cc__body, off_body)[id], w->now); /* the push-apart reads it at now */

@@ -32,6 +32,49 @@ static inline int64_t cc__logical_cell(const cc_world *w, double x, int k)
     return (int64_t)q * n + (int64_t)c;
 }
 
+/* The first and last image index n (centre q + n P) whose centre lies in [lo, hi] along periodic
+ * axis k, widened by far more than the rounding of the subtraction and the division (2^-48 of
+ * the index, and of 1); an empty range (n1 < n0) when none. */
+static inline void cc__image_range(const cc_world *w, double q, double lo, double hi, int k, double *n0, double *n1)
+{
+    double P = w->period[k], a = (lo - q) / P, b = (hi - q) / P;
+    *n0 = ceil(a - 0x1p-48 * (fabs(a) + 1.0));
+    *n1 = floor(b + 0x1p-48 * (fabs(b) + 1.0));
+}
+
+/* Circle j's nearest image to (cx, cy) (a point, a box's centre or a path's middle). */
+static inline void cc__visit_nearest(const cc_world *w, int j, double cx, double cy, cc__region_visit visit, void *ctx)
+{
+    double px, py;
+    cc__body_pos(w, j, w->now, &px, &py);
+    visit(ctx, j, cc__near_shift(w, cx, px, 0), cc__near_shift(w, cy, py, 1));
+}
+
+/* Every image of circle j whose disc can meet the box [x0, x1] x [y0, y1] (its centre within its
+ * radius of the box along each periodic axis; shift 0 along an open one), each once. The box is
+ * a few cells or a cast's piece: a handful of images. */
+static inline void cc__visit_images_in_box(const cc_world *w, int j, double x0, double y0, double x1, double y1,
+                                           cc__region_visit visit, void *ctx)
+{
+    double q[2], lo[2] = {x0, y0}, hi[2] = {x1, y1}, n0[2] = {0.0, 0.0}, n1[2] = {0.0, 0.0}, a, b;
+    double r = CC__CARR(w, cc__body, off_body)[j].r;
+    int k;
+    cc__body_pos(w, j, w->now, &q[0], &q[1]);
+    for (k = 0; k < 2; k++)
+        if (w->period[k] > 0.0)
+            cc__image_range(w, q[k], lo[k] - r, hi[k] + r, k, &n0[k], &n1[k]);
+    if (!(fabs(n0[0]) + fabs(n1[0]) + fabs(n0[1]) + fabs(n1[1]) < 0x1p52 &&
+          (n1[0] - n0[0] + 1.0) * (n1[1] - n0[1] + 1.0) <= 0x1p20)) {
+        /* a box that has lost its place within the period (or a path that overflowed), or holds
+         * a million images (the casts keep far below): the nearest image to its centre */
+        cc__visit_nearest(w, j, 0.5 * (x0 + x1), 0.5 * (y0 + y1), visit, ctx);
+        return;
+    }
+    for (a = n0[0]; a <= n1[0]; a++)
+        for (b = n0[1]; b <= n1[1]; b++)
+            visit(ctx, j, a * w->period[0], b * w->period[1]);
+}
+
 /* The periodic version of cc__visit_region: the logical cells of the box and one around. With
  * `images`, each cell's circles are visited with the shift of its image, as often as the box
  * holds images of it (casts: every image along the path); without, each cell once, shifts 0
@@ -65,14 +108,17 @@ static inline void cc__visit_region_periodic(const cc_world *w, double x0, doubl
     }
     if (far || hi[0] < lo[0] || hi[1] < lo[1] || /* (far: lo and hi are not set; || stops there) */
         ((double)hi[0] - (double)lo[0] + 1.0) * ((double)hi[1] - (double)lo[1] + 1.0) > 4.0 * (double)w->id_end + 9.0) {
-        /* more cells than circles: each circle, once (its nearest image to the box's centre) */
+        /* more cells than circles: each circle, with every image of it the box holds (its
+         * nearest image to the box's centre once the box has lost its place, or for a query) */
         const cc__cold *C = CC__CARR(w, cc__cold, off_cold);
-        double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
         for (j = 0; j < w->id_end; j++)
             if (C[j].flags & CC__ALIVE) {
-                double px, py;
-                cc__body_pos(w, j, w->now, &px, &py);
-                visit(ctx, j, images ? cc__near_shift(w, cx, px, 0) : 0.0, images ? cc__near_shift(w, cy, py, 1) : 0.0);
+                if (!images)
+                    visit(ctx, j, 0.0, 0.0);
+                else if (far)
+                    cc__visit_nearest(w, j, 0.5 * (x0 + x1), 0.5 * (y0 + y1), visit, ctx);
+                else
+                    cc__visit_images_in_box(w, j, x0, y0, x1, y1, visit, ctx);
             }
         return;
     }
@@ -84,19 +130,11 @@ static inline void cc__visit_region_periodic(const cc_world *w, double x0, doubl
                 if (B[j].cx == cx && B[j].cy == cy)
                     visit(ctx, j, images ? sx : 0.0, images ? sy : 0.0);
         }
-    for (j = w->large_head; j >= 0; j = B[j].next) { /* large circles: their images near the box */
-        double px, py;
-        cc__body_pos(w, j, w->now, &px, &py);
-        if (!images) {
+    for (j = w->large_head; j >= 0; j = B[j].next) { /* large circles: their images in the box */
+        if (!images)
             visit(ctx, j, 0.0, 0.0);
-        } else {
-            double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1), bx = cc__near_shift(w, cx, px, 0), by = cc__near_shift(w, cy, py, 1);
-            int a, b;
-            for (a = -1; a <= 1; a++)
-                for (b = -1; b <= 1; b++)
-                    if ((a == 0 || w->period[0] > 0.0) && (b == 0 || w->period[1] > 0.0))
-                        visit(ctx, j, bx + a * w->period[0], by + b * w->period[1]);
-        }
+        else
+            cc__visit_images_in_box(w, j, x0, y0, x1, y1, visit, ctx);
     }
 }
 
@@ -112,7 +150,8 @@ static inline int cc__grid_current(const cc_world *w)
  * [x0, x1] x [y0, y1] now: those filed in the cells of the box and one cell around it (a circle
  * filed by its centre reaches at most half a cell out of it, and the ring covers the rounding of
  * cell crossings), and the large circles; every live circle when the grid cannot answer or the
- * box covers more cells than there are circles. */
+ * box covers more cells than there are circles. With `images` (periodic), once for each image
+ * of it that the box holds, whichever way the circles are found: in every mode and state. */
 static inline void cc__visit_region(const cc_world *w, double x0, double y0, double x1, double y1, int images,
                                     cc__region_visit visit, void *ctx)
 {
@@ -146,9 +185,15 @@ static inline void cc__visit_region(const cc_world *w, double x0, double y0, dou
             return;
         }
     }
-    for (j = 0; j < w->id_end; j++) /* (periodic: the caller takes the nearest image) */
-        if (C[j].flags & CC__ALIVE)
-            visit(ctx, j, 0.0, 0.0);
+    /* every circle: once (open, or a query: the caller takes the nearest image), or with every
+     * image of it the box holds (periodic, for a cast): the grid's answer, without the grid */
+    for (j = 0; j < w->id_end; j++)
+        if (C[j].flags & CC__ALIVE) {
+            if (images && (w->features & CC__F_PERIODIC))
+                cc__visit_images_in_box(w, j, x0, y0, x1, y1, visit, ctx);
+            else
+                visit(ctx, j, 0.0, 0.0);
+        }
 }
 
 /* Whether circle j's category meets mask (a world without properties: every category is 1). */

@@ -365,13 +365,11 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
     else if (cc__props_reserved(w))
         CC__ARR(w, cc__props, off_props)[id].roll = 0.0; /* (read once friction comes: it starts
                                                              with the state written now) */
-    if (w->mode != CC_MODE_EXACT)
-        return; /* the other modes rebuild their grid every step */
-    /* wider than the cells allow: the cell size grows, everything is refiled at the next step */
-    if (!w->dirty && w->use_grid && 2.0 * c->radius * 1.0625 > w->cs)
+    /* EXACT: wider than the cells allow, the cell size grows and everything is refiled at the
+     * next step (the other modes rebuild their grid every step) */
+    if (w->mode == CC_MODE_EXACT && !w->dirty && w->use_grid && 2.0 * c->radius * 1.0625 > w->cs)
         w->dirty = 1;
-    if (!w->dirty)
-        cc__settle_body(w, id);
+    cc__settle_body(w, id);
 }
 
 /* cc__put with the world marked busy: in EXACT a circle put on top of others is pushed apart and

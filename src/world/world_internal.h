@@ -527,7 +527,7 @@ void cc__sensor_pass(cc_world *w);
 
 /* ---- overlap.c / exact.c / swept.c / discrete.c ---- */
 void cc__rebuild(cc_world *w); /* grid, overlaps and (EXACT) every prediction, at w->now */
-void cc__settle_body(cc_world *w, int id); /* a body added or set: overlaps and predictions */
+void cc__settle_body(cc_world *w, int id); /* a body added or set: sensors; overlaps, predictions */
 void cc__settle_props(cc_world *w, int id); /* a body given other properties, where it is */
 /* sides.c: SWEPT and DISCRETE, at w->now: a centre whose path since its lazy state (or, with
  * from_stash, since the position cc__side_stash kept) crossed a wall is put back on the side it

@@ -505,6 +505,10 @@ static int overlaps(const model *m, const snap *s, const char **what)
             }
             q = cc_closest_point_on_segment(a->pos, &m->segs[k]);
             d = hypot(q.x - a->pos.x, q.y - a->pos.y);
+#ifndef FUZZ_WORLD_STRICT
+            if (!(fabs(m->segs[k].a.x) + fabs(m->segs[k].a.y) + fabs(m->segs[k].b.x) + fabs(m->segs[k].b.y) < 1e12))
+                continue; /* D26 (open): a wall 4e15 long left a circle 0.03 inside it after a step */
+#endif
             if (a->radius - d > overlap_tol(a, a, m->time) + 1e-9 * (fabs(q.x) + fabs(q.y))) {
                 *what = "EXACT: a movable circle overlaps a wall deeper than the tolerance after a step";
                 return 1;
@@ -617,8 +621,9 @@ static int rc_step_ok(int rc) { return rc == CC_OK || rc == CC_EVENT_LIMIT || rc
  * D5  SWEPT never stops at max_events (src/world/swept.c cc__step_swept counts events but has no
  *     cap; the header's "no step processes more than def.max_events events" reads as every mode):
  *     a step with max_events 3 processes 4 and returns CC_OK. Code or header to change;
- * D6  a query in a periodic world whose centre lies more than half a period outside [0, period)
- *     misses circles: cc__near_d (src/world/world_internal.h) shifts by one period at most;
+ * D6  fixed: a query in a periodic world whose centre lies more than half a period outside
+ *     [0, period) missed circles (cc__near_d shifts by one period at most); judged again with
+ *     query_tol's tolerance, which is the period's, not the coordinate's;
  * D7  EXACT, a circle added on top of others (and a wall), one of which moves at 1e308: contact
  *     events with a NaN point, and that circle left with velocity (Inf, -Inf) and a NaN position
  *     (tests/fuzz/world_defects/d7-*): the impulse arithmetic overflows (the pair functions
@@ -1052,6 +1057,32 @@ static cc_query_filter filter_of(uint32_t mask, int ignore)
     return f;
 }
 
+/* The boundary's tolerance of a query: a relative 1e-9 of the numbers that make the distance
+ * within the period (the circle's coordinates, the radii, the box's width, the period), plus,
+ * along a periodic axis, the rounding of taking the query's coordinates into the period (2^-48
+ * of their size: a few ulps). A query centred a million periods out is then judged to 1e-9 of
+ * the period, not to 1e-9 of its coordinate (which was the whole period at 1e9 periods); once
+ * that rounding passes a thousandth of the period the query has lost its place in it (the
+ * header's "about 1e15 periods": there beyond 1e12) and -1 says so. */
+static double query_tol(const model *m, double lim, const cc_circle *k, cc_vec2 c, cc_vec2 h, int box)
+{
+    double t = 1e-9 * (lim + fabs(k->pos.x) + fabs(k->pos.y)), v[2];
+    int a;
+    v[0] = fabs(c.x) + (box ? fabs(h.x) : 0.0);
+    v[1] = fabs(c.y) + (box ? fabs(h.y) : 0.0);
+    for (a = 0; a < 2; a++) {
+        if (m->period[a] > 0.0) {
+            double wrap = 0x1p-48 * v[a];
+            if (wrap > 1e-3 * m->period[a])
+                return -1.0;
+            t += wrap + 1e-9 * m->period[a] + (box ? 1e-9 * fabs((a ? h.y - c.y : h.x - c.x)) : 0.0);
+        } else {
+            t += 1e-9 * v[a];
+        }
+    }
+    return t;
+}
+
 static void do_query(model *m, reader *r, int box, const snap *s)
 {
     int ids[MAXC + 8], cap, rc, i, j;
@@ -1105,16 +1136,10 @@ static void do_query(model *m, reader *r, int box, const snap *s)
             lim = k->radius + rad;
         }
         d = hypot(dx, dy);
-        tol = 1e-9 * (lim + fabs(k->pos.x) + fabs(k->pos.y) + fabs(c.x) + fabs(c.y) + fabs(h.x) + fabs(h.y));
-        sure_in = d < lim - tol;
-        sure_out = d > lim + tol;
+        tol = query_tol(m, lim, k, c, h, box);
+        sure_in = tol >= 0.0 && d < lim - tol;
+        sure_out = tol >= 0.0 && d > lim + tol;
 #ifndef FUZZ_WORLD_STRICT
-        {
-            double mx = box ? 0.5 * (c.x + h.x) : c.x, my = box ? 0.5 * (c.y + h.y) : c.y;
-            if ((m->period[0] > 0.0 && !(mx >= -0.5 * m->period[0] && mx <= 1.5 * m->period[0])) ||
-                (m->period[1] > 0.0 && !(my >= -0.5 * m->period[1] && my <= 1.5 * m->period[1])))
-                sure_in = sure_out = 0, lim = INFINITY; /* D6 */
-        }
         if ((m->period[0] > 0.0 && !(m->period[0] < 1e9)) || (m->period[1] > 0.0 && !(m->period[1] < 1e9)))
             sure_in = sure_out = 0; /* D11 */
         if (m->huge && (m->period[0] > 0.0 || m->period[1] > 0.0))
@@ -1147,12 +1172,210 @@ static void do_query(model *m, reader *r, int box, const snap *s)
         REQUIRE(m, live_id(m, ids[i]) && ids[i] != ignore, "query: an id that is not live, or the one left out");
 }
 
+/* ---- the casts' brute force -------------------------------------------------------------------- */
+
+/* What a brute force over the public pair functions says of a cast: the earliest contact it is
+ * sure of (t_sure, HUGE_VAL for none), and whether (t, object) is one it found at all, sure or
+ * within rounding (a graze, a touch at the start, a ray at a wall's end). */
+typedef struct cast_bf {
+    double t_sure, tol;
+    int n;
+    struct { double t; int wall, id, sure; } cand[4 * (MAXC + MAXS) + 64];
+} cast_bf;
+
+static void bf_note(cast_bf *b, double t, int wall, int id, int sure)
+{
+    if (sure && t < b->t_sure)
+        b->t_sure = t;
+    if (b->n < (int)(sizeof b->cand / sizeof b->cand[0])) {
+        b->cand[b->n].t = t, b->cand[b->n].wall = wall, b->cand[b->n].id = id, b->cand[b->n].sure = sure;
+        b->n++;
+    } else if (!sure) {
+        b->n = -1000000; /* more unsure candidates than room: cannot judge */
+    }
+}
+
+/* How many images of each circle the library counts for a cast (src/world/cast.c, the header's
+ * "Periodic boxes": a cast past CC__CAST_IMAGES, 16384, looks at nearest images only, in every
+ * mode and state): the pieces half a period (or the radius) long times the images each piece's
+ * box holds. */
+static double cast_looks(const model *m, cc_vec2 d, double rad)
+{
+    double pmin = HUGE_VAL, piece, n, looks = 1.0, len = hypot(d.x, d.y);
+    int k;
+    for (k = 0; k < 2; k++)
+        if (m->period[k] > 0.0 && m->period[k] < pmin)
+            pmin = m->period[k];
+    if (pmin == HUGE_VAL)
+        return 0.0;
+    piece = 0.5 * pmin > rad ? 0.5 * pmin : rad;
+    n = len / piece < 1.0 ? 1.0 : ceil(len / piece);
+    for (k = 0; k < 2; k++)
+        if (m->period[k] > 0.0)
+            looks *= (fabs(k == 0 ? d.x : d.y) / n + 2.0 * (rad + 0.25 * pmin)) / m->period[k] + 2.0;
+    return n * looks;
+}
+
+/* Image index range along axis k of the centres within R of [lo, hi] (one more either side). */
+static void bf_range(const model *m, int k, double q, double lo, double hi, double R, double *n0, double *n1)
+{
+    if (m->period[k] > 0.0) {
+        *n0 = floor((lo - R - q) / m->period[k]) - 1.0;
+        *n1 = ceil((hi + R - q) / m->period[k]) + 1.0;
+    } else
+        *n0 = *n1 = 0.0;
+}
+
+/* One image of a circle against the cast: cc_sweep with the sum of the radii split between the
+ * two (a ray has radius 0: only the sum counts), sure unless it grazes or starts touching. */
+static void bf_image(cast_bf *b, cc_vec2 p, double rad, cc_vec2 d, double qx, double qy, double rb, int id)
+{
+    cc_circle me, im;
+    cc_contact h;
+    double R = rad + rb, ex = qx - p.x, ey = qy - p.y, dd = d.x * d.x + d.y * d.y, u, cx, cy, dmin, d0;
+    int res, graze;
+    me.pos = p, me.vel = d, me.radius = rad + 0.5 * rb, me.mass = 1.0;
+    im.pos.x = qx, im.pos.y = qy, im.vel.x = im.vel.y = 0.0, im.radius = 0.5 * rb, im.mass = 1.0;
+    if (!(im.radius > 0.0))
+        im.radius = rb, me.radius = rad > 0.0 ? rad : rb; /* (a subnormal radius: unsure below) */
+    res = cc_sweep(&me, &im, 1.0, &h);
+    u = dd > 0.0 ? (ex * d.x + ey * d.y) / dd : 0.0;
+    u = u < 0.0 ? 0.0 : u > 1.0 ? 1.0 : u;
+    cx = ex - u * d.x, cy = ey - u * d.y;
+    dmin = hypot(cx, cy);
+    d0 = hypot(ex, ey);
+    /* both solvers work in the pair's own frame: their rounding is of the pair's numbers (L), and
+     * hit or miss is rounding's where the squares of the closest (or the first) distance and of R
+     * are within 1e-9 L^2 (beyond, the entry time's error stays near an ulp of L) */
+    {
+        double L = d0 + sqrt(dd) + R, g = 1e-9 * L * L;
+        graze = fabs((dmin - R) * (dmin + R)) <= g || fabs((d0 - R) * (d0 + R)) <= g || !(0.5 * rb > 0.0);
+    }
+    if (res == CC_HIT)
+        bf_note(b, h.t, 0, id, !graze && h.t > b->tol && h.t < 1.0 - b->tol);
+    else if (res == CC_OVERLAP)
+        bf_note(b, 0.0, 0, id, !graze);
+    else if (graze && dmin <= R * (1.0 + 1e-6))
+        bf_note(b, h.t, 0, id, 0); /* (t: any; only the object is matched below) */
+}
+
+/* 1: b holds the brute force of the cast; 0: the cast is beyond what it can judge (values
+ * beyond the header's Range, periods beyond 1e9, a path past the images the library promises,
+ * a ray along a wall's line). */
+static int cast_brute(const model *m, const snap *s, cc_vec2 p, double rad, cc_vec2 d, uint32_t mask, int ignore,
+                      cast_bf *b)
+{
+    double S = fabs(p.x) + fabs(p.y) + fabs(d.x) + fabs(d.y) + rad, lo[2], hi[2];
+    int i, k;
+    if (m->huge || m->fast || m->time > 1e9 || !(S < 1e12) || m->period[0] >= 1e9 || m->period[1] >= 1e9)
+        return 0;
+    if (m->period[0] > 0.0 || m->period[1] > 0.0) {
+        if (!(cast_looks(m, d, rad) <= 8192.0))
+            return 0;
+        if (m->rmin < 1e-6 * (m->period[0] + m->period[1]))
+            return 0; /* millions of cells a period: the images of the grid's ring stay exact, but slow to brute-force */
+    }
+    memset(b, 0, sizeof *b);
+    b->t_sure = HUGE_VAL;
+    b->tol = 1e-9 * (S + m->period[0] + m->period[1] + 1.0) / (hypot(d.x, d.y) + rad + 1e-300);
+    if (b->tol > 1e-3)
+        return 0;
+    lo[0] = d.x < 0.0 ? p.x + d.x : p.x, hi[0] = d.x < 0.0 ? p.x : p.x + d.x;
+    lo[1] = d.y < 0.0 ? p.y + d.y : p.y, hi[1] = d.y < 0.0 ? p.y : p.y + d.y;
+    for (i = 0; i < s->n; i++) {
+        const cc_circle *c = &s->c[i];
+        double R = rad + c->radius, a0, a1, a, k0, k1, kk;
+        if (s->ids[i] == ignore || s->p[i].sensor || !(s->p[i].category & mask))
+            continue;
+        if (!(c->radius < 1e12 && fabs(c->pos.x) < 1e12 && fabs(c->pos.y) < 1e12))
+            return 0;
+        bf_range(m, 0, c->pos.x, lo[0], hi[0], R, &a0, &a1);
+        for (a = a0; a <= a1; a++) {
+            double qx = c->pos.x + a * m->period[0], y0 = lo[1], y1 = hi[1];
+            if (m->period[0] > 0.0 && d.x != 0.0) { /* the part of the path within R of this column */
+                double t0 = (qx - R - p.x) / d.x, t1 = (qx + R - p.x) / d.x, tt;
+                if (t0 > t1)
+                    tt = t0, t0 = t1, t1 = tt;
+                t0 = t0 < 0.0 ? 0.0 : t0 > 1.0 ? 1.0 : t0;
+                t1 = t1 < 0.0 ? 0.0 : t1 > 1.0 ? 1.0 : t1;
+                y0 = p.y + t0 * d.y, y1 = p.y + t1 * d.y;
+                if (y0 > y1)
+                    tt = y0, y0 = y1, y1 = tt;
+            }
+            bf_range(m, 1, c->pos.y, y0, y1, R, &k0, &k1);
+            for (kk = k0; kk <= k1; kk++)
+                bf_image(b, p, rad, d, qx, c->pos.y + kk * m->period[1], c->radius, s->ids[i]);
+        }
+    }
+    for (k = 0; k < m->nsegs; k++) {
+        const cc_segment *g = &m->segs[k];
+        if (!(m->segprops[k].category & mask))
+            continue;
+        if (!(fabs(g->a.x) + fabs(g->a.y) + fabs(g->b.x) + fabs(g->b.y) < 1e12))
+            return 0;
+        if (rad > 0.0) {
+            cc_circle me;
+            cc_contact h;
+            int res;
+            me.pos = p, me.vel = d, me.radius = rad, me.mass = 1.0;
+            res = cc_sweep_segment(&me, g, 1.0, &h); /* the library's own call: the same answer */
+            if (res == CC_HIT)
+                bf_note(b, h.t, 1, k, h.t > b->tol && h.t < 1.0 - b->tol);
+            else if (res == CC_OVERLAP)
+                bf_note(b, 0.0, 1, k, 1);
+        } else {
+            double ux = g->b.x - g->a.x, uy = g->b.y - g->a.y, ax = g->a.x - p.x, ay = g->a.y - p.y;
+            double den = d.x * uy - d.y * ux, t, v, e = 1e-9;
+            if (den == 0.0) {
+                if (ax * d.y - ay * d.x == 0.0)
+                    return 0; /* a ray along the wall's own line */
+                continue;
+            }
+            t = (ax * uy - ay * ux) / den;
+            v = (ax * d.y - ay * d.x) / den;
+            if (t >= -e && t <= 1.0 + e && v >= -e && v <= 1.0 + e)
+                bf_note(b, t < 0.0 ? 0.0 : t, 1, k, t > e && t < 1.0 - e && v > e && v < 1.0 - e);
+        }
+    }
+    return b->n >= 0;
+}
+
+/* The cast's answer against the brute force: nothing the brute force is sure of comes before it
+ * (a miss: nothing sure at all), and what it names is among the brute force's contacts near its t. */
+static void check_cast_brute(const model *m, const snap *s, cc_vec2 p, double rad, cc_vec2 d, uint32_t mask, int ignore,
+                             int rc, const cc_cast_hit *out)
+{
+    static cast_bf b;
+    int i, named = 0;
+    double t = rc == CC_MISS ? HUGE_VAL : out->t, tol;
+    if (!cast_brute(m, s, p, rad, d, mask, ignore, &b))
+        return;
+    fuzz_world_counted.casts_judged++;
+    fuzz_world_counted.casts_judged_periodic += m->period[0] > 0.0 || m->period[1] > 0.0;
+    tol = 1e3 * b.tol; /* the solver's answers in two frames: a few ulps of the numbers, far inside this */
+    if (b.t_sure < t - tol) {
+        fprintf(stderr, "fuzz_world: cast p (%.17g, %.17g) radius %.17g d (%.17g, %.17g): %s t %.17g, the brute force a contact at %.17g\n",
+                p.x, p.y, rad, d.x, d.y, rc == CC_MISS ? "miss" : "hit", t, b.t_sure);
+        fail(m, rc == CC_MISS ? "cast: missed a contact the brute force finds" : "cast: a later contact than the brute force's earliest");
+    }
+    if (rc == CC_MISS)
+        return;
+    for (i = 0; i < b.n && !named; i++)
+        named = b.cand[i].wall == (out->segment >= 0) && b.cand[i].id == (out->segment >= 0 ? out->segment : out->circle) &&
+                (!b.cand[i].sure || fabs(b.cand[i].t - t) <= tol);
+    if (!named) {
+        fprintf(stderr, "fuzz_world: cast p (%.17g, %.17g) radius %.17g d (%.17g, %.17g): %s %d at t %.17g, not among the brute force's contacts\n",
+                p.x, p.y, rad, d.x, d.y, out->segment >= 0 ? "wall" : "circle", out->segment >= 0 ? out->segment : out->circle, t);
+        fail(m, "cast: hit something the brute force does not touch");
+    }
+}
+
 static void do_cast(model *m, reader *r, const snap *s)
 {
     cc_cast_hit out, keep;
     cc_vec2 p, d;
     double rad;
-    int rc, i, ignore;
+    int rc, ignore;
     uint32_t mask = mask_and_ignore(r, &ignore);
     cc_query_filter f = filter_of(mask, ignore);
     p.x = value(r, K_POS), p.y = value(r, K_POS);
@@ -1171,6 +1394,7 @@ static void do_cast(model *m, reader *r, const snap *s)
         return;
     }
     REQUIRE(m, rc == CC_HIT || rc == CC_MISS || rc == CC_OVERLAP, "cast: a result outside HIT, MISS, OVERLAP");
+    check_cast_brute(m, s, p, rad, d, mask, ignore, rc, &out);
     if (rc == CC_MISS) {
         REQUIRE(m, memcmp(&out, &keep, sizeof out) == 0, "cast: a miss wrote out");
         return;
@@ -1189,8 +1413,6 @@ static void do_cast(model *m, reader *r, const snap *s)
         REQUIRE(m, (m->segprops[out.segment].category & mask) != 0, "cast: hit a wall its mask excludes");
     if (isfinite(hypot(out.normal.x, out.normal.y)))
         REQUIRE(m, fabs(hypot(out.normal.x, out.normal.y) - 1.0) <= 1e-6, "cast: normal not a unit vector");
-    for (i = 0; i < s->n; i++)
-        (void)s;
 }
 
 /* Runs one call on m; returns 0 when the input is exhausted. */

@@ -19,6 +19,7 @@ extern const char *fuzz_world_input_name;
 /* Counters for the replay's summary (summed over every input run so far). */
 typedef struct fuzz_world_counts {
     unsigned long inputs, worlds, calls, steps, contacts, sensors, refused, copies;
+    unsigned long casts_judged, casts_judged_periodic; /* casts checked against the brute force */
 } fuzz_world_counts;
 extern fuzz_world_counts fuzz_world_counted;
 

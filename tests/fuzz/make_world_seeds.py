@@ -107,6 +107,16 @@ def main():
         ]:
             seeds["%s-%d" % (name, mode)] = defbytes(mode, maxc, maxs, flags, nz, **kw) + calls(rng, 60, maxc, 0.05, 0.6)
     seeds["later-invalid-period"] = defbytes(0, 10, 0, 4, 2 | 0x40, cell=3.0, px=2.0) + calls(rng, 5, 10)
+    # periods out, in every mode, before the first step and after one: a circle at (6, 6) in a box
+    # of 8 x 8, found by queries centred at (-10, -10) (its image there) and hit by a ray from
+    # x = 8.5 by +8 (the image at 14); no rng: the seeds above stay as they were
+    for mode in range(3):
+        body = [ADD, ORD(0.8), ORD(0.8), ORD(0.5), ORD(0.5), ORD(0.3), ORD(0.2)]
+        looks = [QUERY_CIRCLE, 40, 0x80, ORD(0.0), ORD(0.0), ORD(0.05),
+                 QUERY_BOX, 40, 0x80, ORD(0.0), ORD(0.0), ORD(0.1), 1, ORD(0.1),
+                 CAST, 0x80, ORD(0.925), ORD(0.8), ORD(0.7), ORD(0.5), 0]
+        seeds["far-images-%d" % mode] = (defbytes(mode, 12, 0, 3 | 4 | 8, 2, cell=1.0, px=8.0, py=8.0) + body + looks
+                                          + [STEP, ORD(0.1)] + looks)
     # the batch calls (1.2: cc_world_add_circles against as many single adds, on a copy of the
     # world; cc_world_get_unwrapped_all), between the other calls; their own rng, so that the
     # seeds above stay as they were

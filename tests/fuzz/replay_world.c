@@ -23,10 +23,11 @@ int main(int argc, char **argv)
         fuzz_world_one(buf, n);
     }
     printf("replayed %lu inputs: %lu worlds, %lu calls, %lu steps, %lu contact and %lu sensor events, "
-           "%lu callbacks tried every mutator, %lu memcpy copies\n",
+           "%lu callbacks tried every mutator, %lu memcpy copies, %lu casts against the brute force (%lu periodic)\n",
            fuzz_world_counted.inputs, fuzz_world_counted.worlds, fuzz_world_counted.calls,
            fuzz_world_counted.steps, fuzz_world_counted.contacts, fuzz_world_counted.sensors,
-           fuzz_world_counted.refused, fuzz_world_counted.copies);
+           fuzz_world_counted.refused, fuzz_world_counted.copies, fuzz_world_counted.casts_judged,
+           fuzz_world_counted.casts_judged_periodic);
     if (argc < 2 || fuzz_world_counted.worlds == 0 || fuzz_world_counted.contacts == 0) {
         fprintf(stderr, "replay_world: the corpus reaches no world or no contact\n");
         return 1;

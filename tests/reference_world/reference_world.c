@@ -609,11 +609,12 @@ static int add_one(rw_world *w, const cc_circle *c)
     reroll(w, id);
     defer_if_wide(w, c);
     wrap_all(w);
-    if (!w->dirty) {
-        w->busy = 1;
+    w->busy = 1;
+    if (!w->dirty)
         settle(w, id);
-        w->busy = 0;
-    }
+    else /* the push-apart waits for the next step, the sensors' begins and ends do not */
+        sensors_sync(w);
+    w->busy = 0;
     return id;
 }
 
@@ -680,11 +681,12 @@ int rw_set_circle(rw_world *w, int id, const cc_circle *c)
     reroll(w, id);
     defer_if_wide(w, c);
     wrap_all(w);
-    if (!w->dirty) {
-        w->busy = 1;
+    w->busy = 1;
+    if (!w->dirty)
         settle(w, id);
-        w->busy = 0;
-    }
+    else /* the push-apart waits for the next step, the sensors' begins and ends do not */
+        sensors_sync(w);
+    w->busy = 0;
     return CC_OK;
 }
 
@@ -753,6 +755,8 @@ int rw_set_circle_props(rw_world *w, int id, const cc_circle_props *p)
     q->sensor = p->sensor != 0;
     if (!w->dirty) /* as set: overlaps that now interact are pushed apart, sensors brought up */
         settle(w, id);
+    else /* "at once, from inside that call", even while the push-apart waits */
+        sensors_sync(w);
     w->busy = 0;
     return CC_OK;
 }

@@ -597,8 +597,9 @@ impl<'cb> World<'cb> {
     }
 
     /// Adds a circle (its state at the current world time). In EXACT, a circle added on top of
-    /// others is pushed apart at once (the contact callback may run, and a sensor callback when
-    /// it lands in a sensor); a panic there is resumed before this returns.
+    /// others is pushed apart at once (the contact callback may run); in every mode and state a
+    /// circle that lands in a sensor begins at once (the sensor callback runs); a panic there is
+    /// resumed before this returns.
     pub fn add_circle(&mut self, c: &Circle) -> Result<CircleId> {
         let p: *const Circle = c;
         let code = unsafe { sys::cc_world_add_circle(self.w.as_ptr(), p.cast()) };

@@ -251,7 +251,7 @@ fn sensor_events_from_props_filters_and_the_limit() {
         // mask then leaving the sensor's category out: end at once; back in: begin again
         let s = w.add_circle(&Circle::new(v(1.0, 50.0), 1.0).immovable()).unwrap();
         w.set_circle_props(s, &CircleProps { sensor: true, category: 4, ..Default::default() }).unwrap();
-        w.step(0.0).unwrap(); // before the first step, all of this would wait for it
+        w.step(0.0).unwrap(); // (after a step: the same holds before one, in every mode)
         w.set_circle(s, &Circle::new(v(1.0, 0.0), 1.0).immovable()).unwrap();
         w.set_circle_props(ball, &CircleProps { mask: !4, ..Default::default() }).unwrap();
         w.set_circle_props(ball, &CircleProps::default()).unwrap();
