@@ -593,7 +593,8 @@ class World:
 
     def step(self, dt: float) -> bool:
         """Advances world time by dt. Returns False when the step stopped at max_events (the
-        world is consistent at the last event; call again to continue), True otherwise."""
+        world is consistent at the last event; call again with what is left of dt to continue,
+        as ``circlecollide.hard_disks.advance`` does), True otherwise."""
         self._mutating("step")
         dt = _errors.nonneg_finite(dt, "dt", "step")
         self._error = None
