@@ -273,8 +273,9 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           CC_USES_SENSORS; cc_world_set_segment_props that would change a wall's without
  *           PROPS; a def with rolling_decel > 0 without CC_USES_ROLLING is invalid (size 0).
  *           Reading properties gives the defaults, and setting the values a body has is CC_OK.
- *           uses = 0 is 1.0's world: the least memory and the fastest path; a scene that uses
- *           nothing more runs bit for bit alike (the same hash) with uses = 0 and CC_USES_ALL.
+ *           uses = 0 is 1.0's world: the least memory and the fastest path (1.0's, which a world
+ *           of CC_USES_ALL takes too while it uses nothing more); a scene that uses nothing more
+ *           runs bit for bit alike (the same hash) with uses = 0 and CC_USES_ALL.
  * Snapshots A memcpy of the world is a snapshot wherever it is taken, also from inside a
  *           callback: a world is busy (its mutators and cc_world_step refused: CC_ERR_BUSY, or
  *           CC_ERR_INVALID for a 1.0 or 1.1 def) only at
@@ -504,7 +505,7 @@ typedef struct cc_world_def {
 
 /* What a world may use (cc_world_def.uses, 1.2): cc_world_size reserves memory only for what
  * uses lists, and a call that needs what the world did not reserve returns CC_ERR_INVALID and
- * changes nothing. uses = 0 is 1.0's world: the least memory and the fastest path. */
+ * changes nothing. uses = 0 is 1.0's world: the least memory and the fastest path (see "Uses"). */
 #define CC_USES_PROPS 1u   /* per-body properties: restitution, filters, per-circle decel */
 #define CC_USES_SENSORS 2u /* sensor circles */
 #define CC_USES_ROLLING 4u /* rolling_decel or per-circle deceleration */
