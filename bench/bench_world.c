@@ -8,6 +8,8 @@
  *        bench_world scaling  [--quick] [--max-n N] [--csv FILE]
  *        bench_world features [--quick] [--csv FILE]
  *        bench_world disks [--quick]       periodic hard disks at area fractions 0.3, 0.5, 0.7
+ *        bench_world uses [--quick] [--max-n N] [--csv FILE]  bytes per circle for uses = 0, PROPS,
+ *                                          ALL, and the periodic gas with uses = 0 against ALL
  *        bench_world table [--quick]       walls hold: escapes against |v| dt / r, every mode
  *        bench_world jam [--quick]         how long a step that jams takes at its event cap
  *        bench_world dump-gas N PHI    (the gas's initial state, one circle a line, for peers)
@@ -512,6 +514,99 @@ static int cmd_disks(const opts *o)
     return 0;
 }
 
+/* Worlds that reserve only what they use (def.uses): the bytes per circle cc_world_size asks for
+ * with uses = 0, PROPS and ALL (EXACT, open and periodic), then the plain periodic gas (hard
+ * disks at area fraction 0.3, nothing of 1.1 used) run with uses = 0 and with ALL in the same
+ * rounds, the order alternating: the medians of the cost per collision, and the median over
+ * rounds of the per-round ratio uses = 0 / ALL. The two worlds must run the same collisions. */
+static int cmd_uses(const opts *o)
+{
+    static const unsigned uses[3] = {0u, CC_USES_PROPS, CC_USES_ALL};
+    static const char *uses_name[3] = {"0", "PROPS", "ALL"};
+    int ns[2] = {10000, 1000000}, nn = o->quick || o->max_n < 1000000 ? 1 : 2, a, u, p, k, i;
+    FILE *csv = open_csv(o->csv, "row,n,value,lo,hi");
+    if (o->quick)
+        ns[0] = 2000;
+    printf("%-12s %10s %12s %12s %12s\n", "memory", "N", "uses=0", "uses=PROPS", "uses=ALL");
+    for (a = 0; a < 2; a++)
+        for (p = 0; p < 2; p++) {
+            double per[3];
+            for (u = 0; u < 3; u++) {
+                cc_world_def def;
+                cc_world_def_init(&def);
+                def.max_circles = ns[a];
+                def.uses = uses[u];
+                if (p)
+                    def.period.x = def.period.y = 1000.0;
+                per[u] = (double)cc_world_size(&def) / ns[a];
+                if (csv != NULL)
+                    fprintf(csv, "\"bytes per circle, EXACT%s, uses=%s\",%d,%.6g,,\n", p ? " periodic" : "",
+                            uses_name[u], ns[a], per[u]);
+            }
+            printf("%-12s %10d %12.1f %12.1f %12.1f\n", p ? "periodic" : "open", ns[a], per[0], per[1], per[2]);
+            if (!p)
+                bench_figure(a ? "uses_none_bytes_per_circle_1e6" : "uses_none_bytes_per_circle_1e4", per[0]);
+        }
+    printf("%-34s %14s %22s %12s %8s\n", "periodic gas, EXACT", "ns/collision", "spread", "collisions", "ratio");
+    for (a = 0; a < nn; a++) {
+        int n = ns[a], reps = o->quick ? 3 : a ? 3 : 7;
+        double cost[2][16], ratio[16], lo, hi, per_disk = a ? 5.0 : 20.0;
+        uint64_t coll[2] = {0, 0};
+        for (k = 0; k < reps; k++)
+            for (u = 0; u < 2; u++) {
+                int v = (u + k) % 2;
+                double side, t0, c0;
+                bench_scene sc;
+                cc_world_def def;
+                world_box b;
+                bench_scene_disks(&sc, n, 0.3, 99 + (uint64_t)k, &side);
+                cc_world_def_init(&def);
+                def.max_circles = n;
+                def.period.x = def.period.y = side;
+                def.uses = v ? CC_USES_ALL : 0u;
+                b.bytes = cc_world_size(&def);
+                b.mem = bench_alloc(b.bytes);
+                b.w = cc_world_init(b.mem, b.bytes, &def, NULL);
+                if (b.w == NULL) {
+                    fprintf(stderr, "bench_world uses: init failed\n");
+                    return 1;
+                }
+                for (i = 0; i < n; i++)
+                    cc_world_add_circle(b.w, &sc.c[i]);
+                bench_scene_free(&sc);
+                step(b.w, 5.0); /* away from the lattice */
+                c0 = (double)collisions(b.w);
+                t0 = bench_now();
+                while ((double)collisions(b.w) - c0 < per_disk * n)
+                    step(b.w, 0.5);
+                cost[v][k] = (bench_now() - t0) * 1e9 / ((double)collisions(b.w) - c0);
+                if (k == 0)
+                    coll[v] = collisions(b.w);
+                world_free(&b);
+            }
+        for (u = 0; u < 2; u++) {
+            bench_range(cost[u], (size_t)reps, &lo, &hi);
+            printf("N=%-7d uses=%-22s %14.2f %10.2f - %-9.2f %12llu\n", n, u ? "ALL" : "0",
+                   bench_median(cost[u], (size_t)reps), lo, hi, (unsigned long long)coll[u]);
+            if (csv != NULL)
+                fprintf(csv, "\"periodic gas ns/collision, uses=%s\",%d,%.6g,%.6g,%.6g\n", u ? "ALL" : "0", n,
+                        bench_median(cost[u], (size_t)reps), lo, hi);
+        }
+        for (k = 0; k < reps; k++)
+            ratio[k] = cost[0][k] / cost[1][k];
+        bench_range(ratio, (size_t)reps, &lo, &hi);
+        printf("N=%-7d %-27s %14.3f %10.3f - %-9.3f%s\n", n, "ratio uses=0 / ALL", bench_median(ratio, (size_t)reps),
+               lo, hi, coll[0] == coll[1] ? "" : "  (different collisions!)");
+        if (csv != NULL)
+            fprintf(csv, "\"periodic gas ratio uses=0 / ALL\",%d,%.6g,%.6g,%.6g\n", n, bench_median(ratio, (size_t)reps),
+                    lo, hi);
+        bench_figure(a ? "uses_none_speed_ratio_1e6" : "uses_none_speed_ratio_1e4", bench_median(ratio, (size_t)reps));
+    }
+    if (csv != NULL)
+        fclose(csv);
+    return 0;
+}
+
 /* The table (issue 36): a walled 20 x 10 box, 80 circles of radius 0.4 on a lattice, moving at
  * one speed in random directions, 3,000 steps of 0.05 (300 with --quick) in each mode, at speeds
  * of 0.25 to 16 radii a step (|v| dt / r). escapes: circle-steps with a centre outside the box
@@ -626,6 +721,91 @@ static double jam_run(int n, uint64_t cap, int jam, uint64_t *events)
     return t1 - t0;
 }
 
+/* The automatic cap of a 1.2 def (max_events = 0): a jammed step's time at N = 100 and 1,000
+ * circles, and what ordinary steps spend of it: a pool break taken in one call and in 1/60 s
+ * steps, and a periodic gas (area fraction 0.5) stepped a few collisions per disk per call, its
+ * largest step in events per circle (the cap is 32 per circle: the margin is their ratio). */
+static void jam_auto(const opts *o)
+{
+    static const int ns[2] = {100, 1000};
+    int a, k, rep;
+    for (a = 0; a < 2; a++) {
+        double t[3], lo, hi, tmed;
+        uint64_t ev = 0;
+        for (rep = 0; rep < 3; rep++)
+            t[rep] = jam_run(ns[a], 0u, 1, &ev);
+        bench_range(t, 3, &lo, &hi);
+        tmed = bench_median(t, 3);
+        printf("jam of %d circles, automatic cap: %llu events, %.3g s (%.3g-%.3g), %.3g us/event\n", ns[a],
+               (unsigned long long)ev, tmed, lo, hi, 1e6 * tmed / (double)ev);
+        printf("figure jam_auto_seconds_n%d %.4g\n", ns[a], tmed);
+    }
+    for (k = 0; k < 2; k++) { /* the pool break: in one call of its whole 2 s, then at 1/60 s */
+        bench_scene sc;
+        cc_world_def def;
+        world_box b;
+        cc_world_stats s0, s1;
+        uint64_t most = 0;
+        int i, st, capped = 0, steps = k ? 120 : 1;
+        bench_scene_pool(&sc);
+        cc_world_def_init(&def);
+        def.max_circles = sc.n;
+        def.max_segments = sc.n_walls;
+        b.bytes = cc_world_size(&def);
+        b.mem = bench_alloc(b.bytes);
+        b.w = cc_world_init(b.mem, b.bytes, &def, &st);
+        for (i = 0; i < sc.n_walls; i++)
+            (void)cc_world_add_segment(b.w, &sc.walls[i]);
+        for (i = 0; i < sc.n; i++)
+            (void)cc_world_add_circle(b.w, &sc.c[i]);
+        for (i = 0; i < steps; i++) {
+            s0 = bench_stats(b.w);
+            capped += cc_world_step(b.w, sc.t_end / steps) == CC_EVENT_LIMIT;
+            s1 = bench_stats(b.w);
+            if (s1.events - s0.events > most)
+                most = s1.events - s0.events;
+        }
+        printf("pool break in %d step%s (automatic cap 10000): at most %llu events a step, %d capped\n", steps,
+               steps > 1 ? "s" : "", (unsigned long long)most, capped);
+        printf("figure jam_auto_pool_events_%d_steps %llu\n", steps, (unsigned long long)most);
+        bench_scene_free(&sc);
+        world_free(&b);
+    }
+    for (k = 0; k < 2; k++) { /* a periodic gas of 1,000 disks, calls of dt 0.5 and 2 */
+        const int n = 1000, steps = o->quick ? 10 : 40;
+        const double dt = k ? 2.0 : 0.5;
+        bench_scene sc;
+        cc_world_def def;
+        world_box b;
+        cc_world_stats s0, s1;
+        double side, most = 0.0, coll = 0.0;
+        int i, st, capped = 0;
+        bench_scene_disks(&sc, n, 0.5, 36, &side);
+        cc_world_def_init(&def);
+        def.max_circles = n;
+        def.period.x = def.period.y = side;
+        b.bytes = cc_world_size(&def);
+        b.mem = bench_alloc(b.bytes);
+        b.w = cc_world_init(b.mem, b.bytes, &def, &st);
+        for (i = 0; i < n; i++)
+            (void)cc_world_add_circle(b.w, &sc.c[i]);
+        bench_scene_free(&sc);
+        step(b.w, 5.0); /* away from the lattice */
+        for (i = 0; i < steps; i++) {
+            s0 = bench_stats(b.w);
+            capped += cc_world_step(b.w, dt) == CC_EVENT_LIMIT;
+            s1 = bench_stats(b.w);
+            if ((double)(s1.events - s0.events) / n > most)
+                most = (double)(s1.events - s0.events) / n;
+            coll += 2.0 * (double)(s1.collisions - s0.collisions) / n;
+        }
+        printf("periodic gas of %d disks, phi 0.5, steps of %g: %.2f collisions per disk a step, at most %.2f "
+               "events per circle a step (cap 32), %d capped\n", n, dt, coll / steps, most, capped);
+        printf("figure jam_auto_gas_events_per_circle_dt%g %.4g\n", dt, most);
+        world_free(&b);
+    }
+}
+
 static int cmd_jam(const opts *o)
 {
     static const uint64_t caps[] = {10000, 100000, 1000000};
@@ -650,6 +830,7 @@ static int cmd_jam(const opts *o)
         printf("figure jam_over_gas_per_event_cap_%llu %.4g\n", (unsigned long long)caps[k],
                1e6 * tmed / (double)ev / gas_us);
     }
+    jam_auto(o);
     return 0;
 }
 
@@ -736,7 +917,7 @@ int main(int argc, char **argv)
     memset(&o, 0, sizeof o);
     o.max_n = 1000000;
     if (argc < 2) {
-        fprintf(stderr, "usage: %s matrix|headline|scaling|features|disks|table|jam|dump-gas ... [--quick] [--csv FILE]\n", argv[0]);
+        fprintf(stderr, "usage: %s matrix|headline|scaling|features|disks|uses|table|jam|dump-gas ... [--quick] [--csv FILE]\n", argv[0]);
         return 2;
     }
     if (!strcmp(argv[1], "dump-gas") && argc == 4)
@@ -765,6 +946,8 @@ int main(int argc, char **argv)
         return cmd_scaling(&o);
     if (!strcmp(argv[1], "features"))
         return cmd_features(&o);
+    if (!strcmp(argv[1], "uses"))
+        return cmd_uses(&o);
     if (!strcmp(argv[1], "disks"))
         return cmd_disks(&o);
     if (!strcmp(argv[1], "table"))

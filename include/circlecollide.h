@@ -257,11 +257,25 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           even into its own block, so a world may be copied (memcpy) to other 8-byte aligned
  *           memory of the same size and used from there (while a call that fires callbacks
  *           runs it holds its own address as a number, never followed: see "Snapshots"). It keeps no pointer to the caller's
- *           defs, circles or segments (it copies them). About 225 bytes per circle (one 64-byte
- *           line of hot state, the predicted event, queue and grid entries, and 56 bytes of
- *           properties that only a world using them reads) plus about 200 per wall (the wall, its
- *           properties and its place in the walls' tree);
- *           EXACT adds one block of at most 15 KB for simultaneous impacts (see below).
+ *           defs, circles or segments (it copies them). About 160 to 170 bytes per circle in
+ *           EXACT for a world of def.uses = 0 (one 64-byte line of hot state, the predicted
+ *           event, queue and grid entries; 150 to 160 in SWEPT and DISCRETE), 48 more where uses
+ *           lists CC_USES_PROPS, SENSORS or ROLLING (the properties: every world of a 1.0 or 1.1
+ *           def, and the default), 8 more in a periodic world (its count of turns); plus about
+ *           200 per wall (the wall and its place in the walls' tree, and with those uses its
+ *           properties); EXACT adds one block of at most 15 KB for simultaneous impacts (see
+ *           below).
+ * Uses      def.uses (CC_USES_*, 1.2) lists what a world may use, and cc_world_size reserves
+ *           memory only for that. A call that needs what the world did not reserve returns
+ *           CC_ERR_INVALID and changes nothing: cc_world_set_circle_props that would give a
+ *           circle another restitution, category or mask without CC_USES_PROPS, another rolling
+ *           deceleration without PROPS or ROLLING, or make or unmake a sensor without
+ *           CC_USES_SENSORS; cc_world_set_segment_props that would change a wall's without
+ *           PROPS; a def with rolling_decel > 0 without CC_USES_ROLLING is invalid (size 0).
+ *           Reading properties gives the defaults, and setting the values a body has is CC_OK.
+ *           uses = 0 is 1.0's world: the least memory and the fastest path (1.0's, which a world
+ *           of CC_USES_ALL takes too while it uses nothing more); a scene that uses nothing more
+ *           runs bit for bit alike (the same hash) with uses = 0 and CC_USES_ALL.
  * Snapshots A memcpy of the world is a snapshot wherever it is taken, also from inside a
  *           callback: a world is busy (its mutators and cc_world_step refused: CC_ERR_BUSY, or
  *           CC_ERR_INVALID for a 1.0 or 1.1 def) only at
@@ -354,13 +368,19 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           per step and do not count against it): it then returns CC_EVENT_LIMIT with the world
  *           consistent at the time of the last event processed; the next cc_world_step
  *           continues from there. A body squeezed between an immovable circle moving towards
- *           a wall (an impossible scene) hits that cap at every call. How long a capped step
- *           takes: the events of a step that jams (see "Pushing") cost 7 to 10 us each on a
- *           desktop core, 50 to 70 times an event of a plain gas (bench_world jam), so at the
- *           default cap of 1e7 such a step runs about 100 s before it returns (minutes under
- *           a sanitizer). The default suits offline runs, whose long steps need many events; a
- *           real-time caller sets a cap its frame affords: 10,000 events end a jammed step of
- *           100 circles in under 0.1 s (the same bench).
+ *           a wall (an impossible scene) hits that cap at every call. The cap (1.2): a def from
+ *           this header leaves max_events at 0, the automatic cap, fixed at cc_world_init to 32
+ *           events per circle of max_circles and at least 10,000; a value >= 1 is that cap; a
+ *           def from the 1.0 or 1.1 header keeps its default of 10,000,000 (0 is invalid for
+ *           it). How long a capped step takes: the events of a step that jams (see "Pushing")
+ *           cost 6 to 12 us each on a desktop core, 50 to 70 times an event of a plain gas
+ *           (bench_world jam), so the automatic cap ends a jammed step of 100 circles in about
+ *           0.08 s and one of 1,000 in about 0.2 s (0.2 s and 0.7 s under AddressSanitizer),
+ *           while a cap of 1e7 runs about 100 s. Ordinary steps stay far below it: a periodic
+ *           gas of 1,000 disks stepped 4 collisions per disk per call takes at most 3.4 events
+ *           per circle, a pool break in one call 91 events. A long offline step (a whole run in
+ *           one call, a circle crossing thousands of cells) sets a larger cap, or steps again
+ *           by what is left of its dt while the result is CC_EVENT_LIMIT.
  * Simultaneous  In EXACT, an impact is resolved together with everything touching the two
  *           bodies at that instant: circles and walls whose gap is below 2^-40 of the size of
  *           the numbers involved (coordinates, radii, speeds times |world time|), found
@@ -464,8 +484,9 @@ typedef struct cc_world_def {
     double rest_speed;        /* >= 0: approach speeds below this collide with restitution 0: the
                                  remedy for inelastic collapse when restitution < 1 (default 0) */
     double cell_size;         /* >= 0: smallest grid cell size; 0 = derived from the radii (default 0) */
-    uint64_t max_events;      /* >= 1: cap on events per EXACT cc_world_step (default 10000000:
-                                 offline; what a capped step costs: "Collapse") */
+    uint64_t max_events;      /* cap on events per EXACT cc_world_step: >= 1, or 0 (the default)
+                                 for the automatic cap; a 1.0 or 1.1 def: >= 1, default
+                                 10000000; the rule and what a capped step costs: "Collapse" */
     cc_contact_fn on_contact; /* called for every impulse, or NULL (default NULL) */
     void *user;               /* passed to on_contact and on_sensor */
     /* ---- 1.1 (a def of 1.0's size gets these defaults) ---- */
@@ -477,7 +498,19 @@ typedef struct cc_world_def {
     cc_vec2 period;           /* a component > 0 makes the world wrap along that axis with that
                                  period, positions kept in [0, period); 0 leaves it open (default
                                  (0, 0)); see "Periodic boxes" */
+    /* ---- 1.2 (a def of 1.0's or 1.1's size gets CC_USES_ALL) ---- */
+    unsigned uses;            /* CC_USES_* bits: what this world may use (default CC_USES_ALL); see
+                                 "World memory" */
 } cc_world_def;
+
+/* What a world may use (cc_world_def.uses, 1.2): cc_world_size reserves memory only for what
+ * uses lists, and a call that needs what the world did not reserve returns CC_ERR_INVALID and
+ * changes nothing. uses = 0 is 1.0's world: the least memory and the fastest path (see "Uses"). */
+#define CC_USES_PROPS 1u   /* per-body properties: restitution, filters, per-circle decel */
+#define CC_USES_SENSORS 2u /* sensor circles */
+#define CC_USES_ROLLING 4u /* rolling_decel or per-circle deceleration */
+#define CC_USES_CLOTH 8u   /* spin (cloth) */
+#define CC_USES_ALL 0xffffu
 
 /* Defaults for every field that fits in struct_size bytes (whole fields; the bytes of fields
  * this library does not know are zeroed), and sets def->struct_size = struct_size; does nothing
@@ -710,7 +743,8 @@ CC_API int cc_world_get_circle_props(const cc_world *w, int id, cc_circle_props 
  * others keep their current value), at the current world time. CC_OK; CC_ERR_INVALID (NULL, a
  * value out of range), CC_ERR_BUSY (called from a callback) or CC_ERR_VERSION (struct_size too
  * small), and nothing changed; CC_ERR_NOT_FOUND; CC_ERR_FULL when it would make a sensor of the
- * world's CC_MAX_SENSORS + 1st. */
+ * world's CC_MAX_SENSORS + 1st. CC_ERR_INVALID too, nothing changed, for a change that needs what
+ * the world's def.uses did not reserve (see "Uses" above). */
 CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props *p);
 
 /* The same for wall id. */

@@ -65,6 +65,49 @@ static void test_the_header_macro_fills_the_whole_1_1_def(void)
     TEST_ASSERT_NULL(d.on_sensor);
     TEST_ASSERT_EQUAL_DOUBLE(0.0, d.period.x);
     TEST_ASSERT_EQUAL_DOUBLE(0.0, d.period.y);
+    TEST_ASSERT_TRUE(CC_USES_ALL == d.uses);
+}
+
+/* A def of 1.0's or 1.1's size (as a program built against those headers sends it, garbage
+ * after it) gets every use: its world reserves the properties and takes a sensor and per-circle
+ * properties as before, and costs what a 1.2 def of CC_USES_ALL costs. */
+static void test_a_1_0_or_1_1_def_uses_everything(void)
+{
+    size_t sizes[2];
+    int k;
+    sizes[0] = sizeof(def_1_0);
+    sizes[1] = offsetof(cc_world_def, period) + sizeof(cc_vec2);
+    for (k = 0; k < 2; k++) {
+        cc_world_def full, d;
+        cc_world *w;
+        void *mem;
+        size_t bytes;
+        cc_circle c = {{0.0, 0.0}, {0.0, 0.0}, 0.5, 1.0};
+        cc_circle_props p;
+        cc_world_def_init(&full);
+        full.max_circles = 8;
+        memset(&d, 0xA5, sizeof d);
+        memcpy(&d, &full, sizes[k]);
+        d.struct_size = sizes[k];
+        d.max_events = 10000000u; /* a 1.0 or 1.1 header's default (full's 0 is 1.2's automatic cap) */
+        if (k == 1)
+            d.rolling_decel = 0.0;
+        else
+            d.uses = 0; /* beyond a 1.0 def's size: never read */
+        bytes = cc_world_size(&d);
+        TEST_ASSERT_TRUE(bytes == cc_world_size(&full));
+        mem = malloc(bytes);
+        w = cc_world_init(mem, bytes, &d, NULL);
+        TEST_ASSERT_NOT_NULL(w);
+        TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &c));
+        p.struct_size = sizeof p;
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle_props(w, 0, &p));
+        p.sensor = 1;
+        p.restitution = 0.5;
+        p.rolling_decel = 0.25;
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_set_circle_props(w, 0, &p));
+        free(mem);
+    }
 }
 
 static void test_sized_init_zeroes_a_newer_tail_and_refuses_too_small(void)
@@ -94,5 +137,6 @@ int main(void)
     RUN_TEST(test_the_exported_function_writes_a_1_0_def_only);
     RUN_TEST(test_the_header_macro_fills_the_whole_1_1_def);
     RUN_TEST(test_sized_init_zeroes_a_newer_tail_and_refuses_too_small);
+    RUN_TEST(test_a_1_0_or_1_1_def_uses_everything);
     return UNITY_END();
 }

@@ -56,7 +56,8 @@ static void cc__cast_visit(void *ctx, int j, double sx, double sy)
     cc_vec2 q, dp, n;
     double t, R = c->r + b->r;
     int eL, r, id;
-    if (j == c->ignore || !cc__category_meets(w, j, c->mask) || CC__CARR(w, cc__props, off_props)[j].sensor >= 0)
+    if (j == c->ignore || !cc__category_meets(w, j, c->mask) ||
+        ((w->features & CC__F_SENSOR) && CC__CARR(w, cc__props, off_props)[j].sensor >= 0))
         return;
     cc__body_pos(w, j, w->now, &q.x, &q.y);
     q.x += sx; /* periodic: the image the path meets here */
@@ -120,8 +121,8 @@ static void cc__cast_walls(cc__cast *c)
         cc_vec2 n;
         double t;
         int r;
-        if (!(sp[s].category & c->mask))
-            continue;
+        if (!((w->features & CC__F_FILTER) ? sp[s].category & c->mask : c->mask & 1u))
+            continue; /* (no filter set: every wall has category 1, and a world may have no props) */
         if (c->r > 0.0) {
             cc_circle k;
             cc_contact hit;

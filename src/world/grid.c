@@ -88,7 +88,8 @@ void cc__grid_move(cc_world *w, int id, int dir)
         double *p = axis ? &b->py : &b->px;
         *c = step > 0 ? 0 : w->ncell[axis] - 1;
         *p -= step * w->period[axis];
-        CC__ARR(w, cc__props, off_props)[id].wrap[axis] = cc__turns_add(CC__ARR(w, cc__props, off_props)[id].wrap[axis], step);
+        int32_t *turns = &CC__ARR(w, int32_t, off_wrap)[2 * id + axis]; /* a periodic world has it */
+        *turns = cc__turns_add(*turns, step);
     }
     cc__link(w, id, cc__head_of(w, id));
 }
@@ -137,7 +138,7 @@ int32_t cc__turns_add(int32_t a, int32_t b)
 void cc__wrap_body(cc_world *w, int id)
 {
     cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
-    cc__props *p = &CC__ARR(w, cc__props, off_props)[id];
+    int32_t *wrap = &CC__ARR(w, int32_t, off_wrap)[2 * id]; /* called in periodic worlds only */
     int k;
     cc__advance_body(w, b, w->now);
     for (k = 0; k < 2; k++) {
@@ -145,7 +146,7 @@ void cc__wrap_body(cc_world *w, int id)
         int32_t turns;
         if (w->period[k] > 0.0 && !(*x >= 0.0 && *x < w->period[k])) {
             *x = cc__wrap_coord(w, *x, k, &turns);
-            p->wrap[k] = cc__turns_add(p->wrap[k], turns);
+            wrap[k] = cc__turns_add(wrap[k], turns);
         }
     }
 }

@@ -31,6 +31,7 @@ CC_API uint64_t cc_world_hash(const cc_world *w)
 {
     const cc__cold *C;
     const cc__props *P;
+    cc__props dflt;
     const cc_segment *seg;
     const cc__segment_props *sp;
     const int32_t *id2idx;
@@ -39,30 +40,37 @@ CC_API uint64_t cc_world_hash(const cc_world *w)
     if (w == NULL || w->magic != CC__WORLD_MAGIC)
         return 0;
     C = CC__CARR(w, cc__cold, off_cold);
-    P = CC__CARR(w, cc__props, off_props);
+    P = cc__props_reserved(w) ? CC__CARR(w, cc__props, off_props) : NULL;
+    cc__props_default(w, &dflt); /* what every body of a world without props has */
     seg = CC__CARR(w, cc_segment, off_seg);
-    sp = CC__CARR(w, cc__segment_props, off_segprops);
+    sp = cc__props_reserved(w) ? CC__CARR(w, cc__segment_props, off_segprops) : NULL;
     id2idx = CC__CARR(w, int32_t, off_id2idx);
     h = cc__mix_double(h, w->now);
     for (id = 0; id < w->id_end; id++) {
         int k = id2idx[id];
         cc_circle c;
+        const cc__props *p = P != NULL ? &P[k] : &dflt;
         if (!(C[k].flags & CC__ALIVE))
             continue;
         (void)cc_world_get_circle(w, id, &c); /* the state the API shows */
         h = cc__mix(h, (uint64_t)id);
         h = cc__mix_vec(cc__mix_vec(h, c.pos), c.vel);
         h = cc__mix_double(cc__mix_double(h, c.radius), c.mass);
-        h = cc__mix_double(cc__mix_double(h, P[k].restitution), P[k].decel);
-        h = cc__mix(h, (uint64_t)P[k].category << 32 | P[k].mask);
-        h = cc__mix(h, P[k].sensor >= 0 ? (uint64_t)P[k].sensor + 1u : 0u);
-        h = cc__mix(h, P[k].inside);
+        h = cc__mix_double(cc__mix_double(h, p->restitution), p->decel);
+        h = cc__mix(h, (uint64_t)p->category << 32 | p->mask);
+        h = cc__mix(h, p->sensor >= 0 ? (uint64_t)p->sensor + 1u : 0u);
+        h = cc__mix(h, p->inside);
     }
     h = cc__mix(h, (uint64_t)w->n_segments);
     for (s = 0; s < w->n_segments; s++) {
         h = cc__mix_vec(cc__mix_vec(h, seg[s].a), seg[s].b);
-        h = cc__mix_double(h, sp[s].restitution);
-        h = cc__mix(h, (uint64_t)sp[s].category << 32 | sp[s].mask);
+        if (sp != NULL) {
+            h = cc__mix_double(h, sp[s].restitution);
+            h = cc__mix(h, (uint64_t)sp[s].category << 32 | sp[s].mask);
+        } else { /* a wall's defaults */
+            h = cc__mix_double(h, w->restitution);
+            h = cc__mix(h, (uint64_t)1u << 32 | 0xFFFFFFFFu);
+        }
     }
     /* the settings that decide what happens next (not the callbacks or the user pointer) */
     h = cc__mix(h, (uint64_t)w->mode << 32 | (uint32_t)w->mix);

@@ -18,14 +18,13 @@ static const size_t cc__segment_props_ends[] = {
 
 void cc__props_default(const cc_world *w, cc__props *p)
 {
-    memset(p, 0, sizeof *p); /* the rolling state and the periods' turns start at 0 */
+    memset(p, 0, sizeof *p); /* the rolling state starts at 0 */
     p->restitution = w->restitution;
     p->decel = w->rolling_decel;
     p->inside = 0;
     p->category = 1u;
     p->mask = 0xFFFFFFFFu;
     p->sensor = -1;
-    p->free_next = -1;
 }
 
 int cc__circles_interact(const cc_world *w, int i, int j)
@@ -56,6 +55,8 @@ double cc__contact_restitution(const cc_world *w, int i, int j, int s)
     const cc__props *P = CC__CARR(w, cc__props, off_props);
     if (!(w->features & CC__F_RESTITUTION))
         return w->restitution; /* every side has def.restitution, which the rule mixes to itself */
+    if (!cc__props_reserved(w)) /* (product mixing of defaults): every side has def.restitution */
+        return cc__mix(w->mix, w->restitution, w->restitution);
     if (j >= 0)
         return cc__mix(w->mix, P[i].restitution, P[j].restitution);
     return cc__mix(w->mix, P[i].restitution, CC__CARR(w, cc__segment_props, off_segprops)[s].restitution);
@@ -85,6 +86,7 @@ static void cc__copy_fields(void *dst, const void *src, size_t size, const size_
 CC_API int cc_world_get_circle_props(const cc_world *w, int id, cc_circle_props *out)
 {
     const cc__props *p;
+    cc__props dflt;
     cc_circle_props q;
     int k;
     if (!cc__world_ok(w) || out == NULL)
@@ -93,7 +95,12 @@ CC_API int cc_world_get_circle_props(const cc_world *w, int id, cc_circle_props 
         return CC_ERR_VERSION;
     if ((k = cc__live_index(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
-    p = &CC__CARR(w, cc__props, off_props)[k];
+    if (cc__props_reserved(w)) {
+        p = &CC__CARR(w, cc__props, off_props)[k];
+    } else {
+        cc__props_default(w, &dflt); /* a world without props: every circle has its defaults */
+        p = &dflt;
+    }
     memset(&q, 0, sizeof q);
     q.restitution = p->restitution;
     q.rolling_decel = p->decel;
@@ -116,7 +123,7 @@ static int cc__free_slot(const cc_world *w)
 
 CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props *in)
 {
-    cc__props *p;
+    cc__props *p, dflt;
     cc_circle_props q;
     int k, was_sensor, slot = -1;
     if (!cc__world_ok(w) || in == NULL)
@@ -127,7 +134,12 @@ CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props 
         return CC_ERR_VERSION;
     if ((k = cc__live_index(w, id)) < 0)
         return CC_ERR_NOT_FOUND;
-    p = &CC__ARR(w, cc__props, off_props)[k];
+    if (cc__props_reserved(w)) {
+        p = &CC__ARR(w, cc__props, off_props)[k];
+    } else {
+        cc__props_default(w, &dflt); /* its values; any other is refused below */
+        p = &dflt;
+    }
     /* the current values, overwritten by the fields the caller sent */
     q.struct_size = sizeof q;
     q.restitution = p->restitution;
@@ -142,6 +154,12 @@ CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props 
     if (q.restitution == p->restitution && q.rolling_decel == p->decel && q.category == p->category &&
         q.mask == p->mask && !q.sensor == !was_sensor)
         return CC_OK; /* nothing changes: nothing is done (the same bits as without the call) */
+    /* what the world did not reserve (def.uses) is refused, nothing changed */
+    if (((q.restitution != p->restitution || q.category != p->category || q.mask != p->mask) &&
+         !(w->uses & CC_USES_PROPS)) ||
+        (q.rolling_decel != p->decel && !(w->uses & (CC_USES_PROPS | CC_USES_ROLLING))) ||
+        (!q.sensor != !was_sensor && !(w->uses & CC_USES_SENSORS)))
+        return CC_ERR_INVALID;
     if (q.sensor && !was_sensor && (slot = cc__free_slot(w)) < 0)
         return CC_ERR_FULL;
     /* valid: from here on it changes, and callbacks may fire (ends of overlaps, push-aparts) */
@@ -171,9 +189,18 @@ CC_API int cc_world_set_circle_props(cc_world *w, int id, const cc_circle_props 
     return CC_OK;
 }
 
+/* A wall's defaults, for a world without props. */
+static void cc__segment_default(const cc_world *w, cc__segment_props *p)
+{
+    p->restitution = w->restitution;
+    p->category = 1u;
+    p->mask = 0xFFFFFFFFu;
+}
+
 CC_API int cc_world_get_segment_props(const cc_world *w, int id, cc_segment_props *out)
 {
     const cc__segment_props *p;
+    cc__segment_props dflt;
     cc_segment_props q;
     if (!cc__world_ok(w) || out == NULL)
         return CC_ERR_INVALID;
@@ -181,7 +208,12 @@ CC_API int cc_world_get_segment_props(const cc_world *w, int id, cc_segment_prop
         return CC_ERR_VERSION;
     if (id < 0 || id >= w->n_segments)
         return CC_ERR_NOT_FOUND;
-    p = &CC__CARR(w, cc__segment_props, off_segprops)[id];
+    if (cc__props_reserved(w)) {
+        p = &CC__CARR(w, cc__segment_props, off_segprops)[id];
+    } else {
+        cc__segment_default(w, &dflt);
+        p = &dflt;
+    }
     memset(&q, 0, sizeof q);
     q.restitution = p->restitution;
     q.category = p->category;
@@ -192,7 +224,7 @@ CC_API int cc_world_get_segment_props(const cc_world *w, int id, cc_segment_prop
 
 CC_API int cc_world_set_segment_props(cc_world *w, int id, const cc_segment_props *in)
 {
-    cc__segment_props *p;
+    cc__segment_props *p, dflt;
     cc_segment_props q;
     if (!cc__world_ok(w) || in == NULL)
         return CC_ERR_INVALID;
@@ -202,7 +234,12 @@ CC_API int cc_world_set_segment_props(cc_world *w, int id, const cc_segment_prop
         return CC_ERR_VERSION;
     if (id < 0 || id >= w->n_segments)
         return CC_ERR_NOT_FOUND;
-    p = &CC__ARR(w, cc__segment_props, off_segprops)[id];
+    if (cc__props_reserved(w)) {
+        p = &CC__ARR(w, cc__segment_props, off_segprops)[id];
+    } else {
+        cc__segment_default(w, &dflt);
+        p = &dflt;
+    }
     q.struct_size = sizeof q;
     q.restitution = p->restitution;
     q.category = p->category;
@@ -210,6 +247,9 @@ CC_API int cc_world_set_segment_props(cc_world *w, int id, const cc_segment_prop
     cc__copy_fields(&q, in, in->struct_size, cc__segment_props_ends, CC__COUNT(cc__segment_props_ends));
     if (!(q.restitution >= 0.0 && q.restitution <= 1.0))
         return CC_ERR_INVALID;
+    if (!(w->uses & CC_USES_PROPS)) /* the world did not reserve walls' properties: what it is */
+        return q.restitution == p->restitution && q.category == p->category && q.mask == p->mask ? CC_OK
+                                                                                                   : CC_ERR_INVALID;
     cc__world_own(w);
     if (q.restitution != w->restitution)
         w->features |= CC__F_RESTITUTION;

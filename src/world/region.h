@@ -199,6 +199,8 @@ static inline void cc__visit_region(const cc_world *w, double x0, double y0, dou
 /* Whether circle j's category meets mask (a world without properties: every category is 1). */
 static inline int cc__category_meets(const cc_world *w, int j, uint32_t mask)
 {
+    if (!(w->features & CC__F_FILTER))
+        return (mask & 1u) != 0; /* every circle has the default category (a world may have no props) */
     return (CC__CARR(w, cc__props, off_props)[j].category & mask) != 0;
 }
 

@@ -67,6 +67,8 @@ void cc__sort_bodies(cc_world *w)
     cc__cold *C = CC__ARR(w, cc__cold, off_cold);
     cc__event *EV = CC__ARR(w, cc__event, off_ev);
     cc__props *P = CC__ARR(w, cc__props, off_props);
+    int32_t *W = CC__ARR(w, int32_t, off_wrap);
+    int props = cc__props_reserved(w), wrap = w->off_wrap != 0;
     int32_t *idx2id = CC__ARR(w, int32_t, off_idx2id), *id2idx = CC__ARR(w, int32_t, off_id2idx);
     int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
     cc__sort_entry *e = CC__ARR(w, cc__sort_entry, off_heap); /* the queue is rebuilt below */
@@ -89,14 +91,21 @@ void cc__sort_bodies(cc_world *w)
         cc__cold tc;
         cc__event te;
         cc__props tp;
-        int32_t tid;
+        int32_t tid, tw[2] = {0, 0};
         int q = p;
         if (e[p].done)
             continue;
         tb = B[p];
         tc = C[p];
         te = EV[p];
-        tp = P[p];
+        if (props)
+            tp = P[p];
+        else
+            memset(&tp, 0, sizeof tp); /* (never stored: only copied where a block holds it) */
+        if (wrap) {
+            tw[0] = W[2 * p];
+            tw[1] = W[2 * p + 1];
+        }
         tid = idx2id[p];
         for (;;) {
             int src = e[q].idx;
@@ -105,14 +114,24 @@ void cc__sort_bodies(cc_world *w)
                 B[q] = tb;
                 C[q] = tc;
                 EV[q] = te;
-                P[q] = tp;
+                if (props)
+                    P[q] = tp;
+                if (wrap) {
+                    W[2 * q] = tw[0];
+                    W[2 * q + 1] = tw[1];
+                }
                 idx2id[q] = tid;
                 break;
             }
             B[q] = B[src];
             C[q] = C[src];
             EV[q] = EV[src];
-            P[q] = P[src];
+            if (props)
+                P[q] = P[src];
+            if (wrap) {
+                W[2 * q] = W[2 * src];
+                W[2 * q + 1] = W[2 * src + 1];
+            }
             idx2id[q] = idx2id[src];
             q = src;
         }

@@ -18,6 +18,21 @@
 /* The def of 1.0: its fields end at user. */
 #define CC__DEF_1_0 (offsetof(cc_world_def, user) + sizeof(void *))
 
+/* max_events of a def from a 1.0 or 1.1 header, which its programs rely on for long offline steps. */
+#define CC__EVENTS_1_1 10000000u
+
+/* The automatic cap of a 1.2 def (max_events = 0): CC__EVENTS_PER_CIRCLE events per circle of
+ * max_circles, at least CC__EVENTS_MIN, so that a step that jams returns within a game's patience
+ * (the header's "Collapse" has the measured costs) while an ordinary step never meets it. */
+#define CC__EVENTS_PER_CIRCLE 32u
+#define CC__EVENTS_MIN 10000u
+
+static uint64_t cc__auto_events(int max_circles)
+{
+    uint64_t n = (uint64_t)CC__EVENTS_PER_CIRCLE * (uint64_t)(max_circles > 0 ? max_circles : 0);
+    return n > CC__EVENTS_MIN ? n : CC__EVENTS_MIN;
+}
+
 /* Every default into a whole def of this library's size. */
 static void cc__def_defaults(cc_world_def *def)
 {
@@ -29,7 +44,7 @@ static void cc__def_defaults(cc_world_def *def)
     def->restitution = 1.0;
     def->rest_speed = 0.0;
     def->cell_size = 0.0;
-    def->max_events = 10000000u;
+    def->max_events = 0; /* automatic, from max_circles (a 1.0 or 1.1 def: CC__EVENTS_1_1) */
     def->on_contact = NULL;
     def->user = NULL;
     def->rolling_decel = 0.0;
@@ -37,6 +52,7 @@ static void cc__def_defaults(cc_world_def *def)
     def->on_sensor = NULL;
     def->period.x = 0.0;
     def->period.y = 0.0;
+    def->uses = CC_USES_ALL;
 }
 
 
@@ -49,7 +65,7 @@ static const size_t cc__def_ends[] = {
     CC__END(cc_world_def, cell_size), CC__END(cc_world_def, max_events),
     CC__END(cc_world_def, on_contact), CC__END(cc_world_def, user),
     CC__END(cc_world_def, rolling_decel), CC__END(cc_world_def, restitution_mix),
-    CC__END(cc_world_def, on_sensor), CC__END(cc_world_def, period)};
+    CC__END(cc_world_def, on_sensor), CC__END(cc_world_def, period), CC__END(cc_world_def, uses)};
 
 CC_API void cc_world_def_init_sized(cc_world_def *def, size_t struct_size)
 {
@@ -62,6 +78,8 @@ CC_API void cc_world_def_init_sized(cc_world_def *def, size_t struct_size)
         memset((unsigned char *)def + sizeof d, 0, struct_size - sizeof d);
     else
         memset(def, 0, struct_size);
+    if (!cc__def_knows_1_2(struct_size))
+        d.max_events = CC__EVENTS_1_1;
     memcpy(def, &d, cc__whole_fields(struct_size, cc__def_ends, (int)(sizeof cc__def_ends / sizeof cc__def_ends[0])));
     def->struct_size = struct_size;
 }
@@ -99,14 +117,18 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
     if (in->struct_size < CC__DEF_MIN)
         return CC_ERR_VERSION;
     cc__def_defaults(out);
+    if (!cc__def_knows_1_2(in->struct_size))
+        out->max_events = CC__EVENTS_1_1; /* also for a def that ends before max_events */
     memcpy(out, in, cc__whole_fields(in->struct_size, cc__def_ends, (int)(sizeof cc__def_ends / sizeof cc__def_ends[0])));
     out->struct_size = sizeof *out;
     if (out->max_circles < 0 || out->max_segments < 0 || out->mode < CC_MODE_EXACT || out->mode > CC_MODE_DISCRETE ||
         !(out->restitution >= 0.0 && out->restitution <= 1.0) ||
         !(out->rest_speed >= 0.0 && isfinite(out->rest_speed)) ||
-        !(out->cell_size >= 0.0 && isfinite(out->cell_size)) || out->max_events == 0 ||
+        !(out->cell_size >= 0.0 && isfinite(out->cell_size)) ||
+        (out->max_events == 0 && !cc__def_knows_1_2(in->struct_size)) ||
         !(out->rolling_decel >= 0.0 && isfinite(out->rolling_decel)) || out->restitution_mix < CC_MIX_MIN ||
-        out->restitution_mix > CC_MIX_MEAN || !cc__period_ok(out->period.x) || !cc__period_ok(out->period.y))
+        out->restitution_mix > CC_MIX_MEAN || !cc__period_ok(out->period.x) || !cc__period_ok(out->period.y) ||
+        (out->uses & ~CC_USES_ALL) != 0 || (out->rolling_decel > 0.0 && !(out->uses & CC_USES_ROLLING)))
         return CC_ERR_INVALID;
     /* beyond the documented limits: the capacities (where size_t has 32 bits they must also leave
      * the byte count representable), a period not wider than the cell it must hold */
@@ -143,11 +165,19 @@ static uint32_t cc__slots(const cc_world_def *d)
     return s;
 }
 
-/* Fills the offsets of w (when not NULL) and returns the total size. */
+/* Whether a world of this def reserves the properties' blocks (circles' and walls'). */
+static int cc__def_props(const cc_world_def *d)
+{
+    return (d->uses & (CC_USES_PROPS | CC_USES_SENSORS | CC_USES_ROLLING)) != 0;
+}
+
+/* Fills the offsets of w (when not NULL) and returns the total size. A block of no bytes (not
+ * reserved) that the world tells apart by its offset gets offset 0. */
 static size_t cc__layout(const cc_world_def *d, cc_world *w)
 {
     size_t n = (size_t)d->max_circles, off = cc__align16(sizeof(cc_world));
-    size_t offs[17], sizes[17];
+    size_t offs[18], sizes[18];
+    int props = cc__def_props(d), periodic = d->period.x > 0.0 || d->period.y > 0.0;
     int cal_nb = cc__calendar_buckets(d->mode, d->max_circles);
     int clu_b, clu_c;
     int k;
@@ -162,13 +192,14 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[8] = n * sizeof(int32_t);  /* id -> index */
     sizes[9] = n * sizeof(int32_t); /* index -> id */
     sizes[10] = cc__cluster_block(d->max_circles, d->mode, &clu_b, &clu_c); /* EXACT's clusters */
-    sizes[11] = n * sizeof(cc__props);
-    sizes[12] = (size_t)d->max_segments * sizeof(cc__segment_props);
+    sizes[11] = props ? n * sizeof(cc__props) : 0;
+    sizes[12] = props ? (size_t)d->max_segments * sizeof(cc__segment_props) : 0;
     sizes[13] = (size_t)d->max_segments * sizeof(cc__wall_box);        /* the walls' tree */
     sizes[14] = 2 * (size_t)d->max_segments * sizeof(cc__wall_node);
     sizes[15] = (size_t)d->max_segments * sizeof(int32_t);
     sizes[16] = cal_nb > 0 ? ((size_t)cal_nb + 1) * sizeof(int32_t) : 0; /* the calendar's buckets */
-    for (k = 0; k < 17; k++) {
+    sizes[17] = periodic ? 2 * n * sizeof(int32_t) : 0; /* the turns of a periodic world */
+    for (k = 0; k < 18; k++) {
         offs[k] = off;
         off += cc__align16(sizes[k]);
     }
@@ -184,8 +215,10 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_id2idx = offs[8];
         w->off_idx2id = offs[9];
         w->off_clu = offs[10];
-        w->off_props = offs[11];
-        w->off_segprops = offs[12];
+        w->off_props = props ? offs[11] : 0;
+        w->off_segprops = props ? offs[12] : 0;
+        w->off_wrap = periodic ? offs[17] : 0;
+        w->uses = d->uses;
         w->off_wallbox = offs[13];
         w->off_wallnode = offs[14];
         w->off_wallorder = offs[15];
@@ -228,7 +261,7 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
     w->restitution = d.restitution;
     w->rest_speed = d.rest_speed;
     w->cell_hint = d.cell_size;
-    w->max_events = d.max_events;
+    w->max_events = d.max_events != 0 ? d.max_events : cc__auto_events(d.max_circles);
     w->on_contact = d.on_contact;
     w->user = d.user;
     w->on_sensor = d.on_sensor;
@@ -311,8 +344,10 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
 {
     cc__body *b = &CC__ARR(w, cc__body, off_body)[id];
     cc__cold *k = &CC__ARR(w, cc__cold, off_cold)[id];
-    cc__props *p = &CC__ARR(w, cc__props, off_props)[id];
-    p->wrap[0] = p->wrap[1] = 0; /* where it is put is its unwrapped position (cc__wrap_body) */
+    if (w->off_wrap != 0) { /* where it is put is its unwrapped position (cc__wrap_body) */
+        CC__ARR(w, int32_t, off_wrap)[2 * id] = 0;
+        CC__ARR(w, int32_t, off_wrap)[2 * id + 1] = 0;
+    }
     b->px = c->pos.x;
     b->py = c->pos.y;
     b->vx = c->vel.x;
@@ -327,8 +362,9 @@ static void cc__put(cc_world *w, int id, const cc_circle *c)
     k->flags = CC__ALIVE;
     if (w->features & CC__F_ROLL)
         cc__roll_reset(w, id);
-    else
-        p->roll = 0.0; /* (read once friction comes: it starts with the state written now) */
+    else if (cc__props_reserved(w))
+        CC__ARR(w, cc__props, off_props)[id].roll = 0.0; /* (read once friction comes: it starts
+                                                             with the state written now) */
     /* EXACT: wider than the cells allow, the cell size grows and everything is refiled at the
      * next step (the other modes rebuild their grid every step) */
     if (w->mode == CC_MODE_EXACT && !w->dirty && w->use_grid && 2.0 * c->radius * 1.0625 > w->cs)
@@ -380,7 +416,7 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
     cc__world_own(w);
     if (w->free_top > 0) { /* the last removed id (it keeps its storage index), off the free stack */
         id = w->free_head;
-        w->free_head = CC__CARR(w, cc__props, off_props)[CC__CARR(w, int32_t, off_id2idx)[id]].free_next;
+        w->free_head = CC__CARR(w, cc__cold, off_cold)[CC__CARR(w, int32_t, off_id2idx)[id]].prev;
         w->free_top--;
     } else {
         id = w->id_end++;
@@ -389,7 +425,8 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
         CC__ARR(w, cc__body, off_body)[id].count = 0; /* first use of this slot of memory */
     }
     w->n_circles++;
-    cc__props_default(w, &CC__ARR(w, cc__props, off_props)[CC__ARR(w, int32_t, off_id2idx)[id]]);
+    if (cc__props_reserved(w))
+        cc__props_default(w, &CC__ARR(w, cc__props, off_props)[CC__ARR(w, int32_t, off_id2idx)[id]]);
     cc__put_guarded(w, CC__ARR(w, int32_t, off_id2idx)[id], c);
     return id;
 }
@@ -465,7 +502,7 @@ CC_API int cc_world_remove_circle(cc_world *w, int id)
     cc__unfile(w, k);
     cc__sensor_forget(w, k, 1); /* a removed circle's overlaps are forgotten, not reported */
     CC__ARR(w, cc__cold, off_cold)[k].flags = 0;
-    CC__ARR(w, cc__props, off_props)[k].free_next = w->free_head; /* onto the free stack */
+    CC__ARR(w, cc__cold, off_cold)[k].prev = w->free_head; /* onto the free stack */
     w->free_head = id;
     w->free_top++;
     w->n_circles--;
@@ -482,7 +519,7 @@ CC_API int cc_world_add_segment(cc_world *w, const cc_segment *s)
         return CC_ERR_FULL;
     cc__world_own(w);
     CC__ARR(w, cc_segment, off_seg)[w->n_segments] = *s;
-    {
+    if (cc__props_reserved(w)) {
         cc__segment_props *q = &CC__ARR(w, cc__segment_props, off_segprops)[w->n_segments];
         q->restitution = w->restitution;
         q->category = 1u;
@@ -530,9 +567,9 @@ CC_API int cc_world_get_circle(const cc_world *w, int id, cc_circle *out)
 static void cc__unwrapped(const cc_world *w, int k, cc_vec2 *out)
 {
     const cc__body *b = &CC__CARR(w, cc__body, off_body)[k];
-    const cc__props *p = &CC__CARR(w, cc__props, off_props)[k];
-    out->x = cc__bx(w, b, w->now) + (double)p->wrap[0] * w->period[0];
-    out->y = cc__by(w, b, w->now) + (double)p->wrap[1] * w->period[1];
+    const int32_t *turns = w->off_wrap != 0 ? &CC__CARR(w, int32_t, off_wrap)[2 * k] : NULL;
+    out->x = cc__bx(w, b, w->now) + (turns != NULL ? (double)turns[0] * w->period[0] : 0.0);
+    out->y = cc__by(w, b, w->now) + (turns != NULL ? (double)turns[1] * w->period[1] : 0.0);
 }
 
 CC_API int cc_world_get_unwrapped(const cc_world *w, int id, cc_vec2 *out)

@@ -27,12 +27,15 @@ typedef struct cc__body {
 typedef struct cc__cold {
     double m;       /* mass, +INFINITY for an immovable circle */
     int32_t flags;  /* CC__ALIVE, CC__LARGE, ... */
-    int32_t prev;   /* previous circle in its list, -1 for the first */
+    int32_t prev;   /* previous circle in its list, -1 for the first; a removed circle: the id
+                       removed before it (the free stack, world.c) */
 } cc__cold;
 
-/* Per-body properties (issue 13) and rolling (issue 12): what only a world that uses those
- * features reads, kept apart so that the hot and cold lines of a world without them are as in
- * 1.0. Storage order, like the others (sort.c permutes it). */
+/* Per-body properties and rolling: what only a world that uses those features reads, kept apart
+ * so that the hot and cold lines of a world without them are as in 1.0. Reserved only when the
+ * def's uses lists PROPS, SENSORS or ROLLING (off_props != 0, with the walls' props beside it);
+ * a world without the block reads the defaults instead (cc__props_reserved). Storage order, like
+ * the others (sort.c permutes it). */
 typedef struct cc__props {
     double restitution;
     double decel;       /* rolling deceleration; 0 for an immovable circle */
@@ -41,9 +44,13 @@ typedef struct cc__props {
     uint64_t inside;    /* the sensors (by slot) this circle overlaps now */
     uint32_t category, mask;
     int32_t sensor;     /* its sensor slot, or -1 */
-    int32_t free_next;  /* a removed circle: the id removed before it (the free stack, world.c) */
-    int32_t wrap[2];    /* periodic axes: how many periods it has crossed (+ along the axis) */
 } cc__props;
+
+/* What every world needs of the circles beyond the hot and cold lines lives elsewhere: a removed
+ * circle's link on the free stack in its cold line's prev (a removed circle is on no grid list:
+ * EXACT takes it off, the other modes and a dirty world clear the grid before filing), and a
+ * periodic world's count of turns in the wrap block (off_wrap, int32_t[2] per circle: how many
+ * periods it has crossed, + along the axis), reserved only when the def has a period. */
 
 typedef struct cc__segment_props {
     double restitution;
@@ -128,7 +135,7 @@ struct cc_world {
     int n_circles;    /* live circles */
     int n_segments;
     int id_end;       /* ids in [0, id_end) have been used at least once */
-    int free_top, free_head; /* removed ids waiting for reuse, the last (a stack through props' free_next) */
+    int free_top, free_head; /* removed ids waiting for reuse, the last (a stack through cold's prev) */
     int heap_n;
     int n_touched;    /* bodies on the touched list */
     uint64_t events_at_sort; /* stats.events when storage was last sorted */
@@ -141,7 +148,9 @@ struct cc_world {
     size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_touched, off_slot, off_seg;
     size_t off_id2idx, off_idx2id; /* a circle's id <-> its storage index (see sort.c) */
     size_t off_clu;                /* EXACT: the simultaneous-impact cluster (simultaneous.c) */
-    size_t off_props, off_segprops; /* per-body properties (props.c) */
+    size_t off_props, off_segprops; /* per-body properties (props.c); 0: not reserved */
+    size_t off_wrap;                /* periodic: int32_t[2] turns per circle; 0: not reserved */
+    unsigned uses;                  /* the def's CC_USES_* */
     size_t off_wallbox, off_wallnode, off_wallorder; /* the walls' tree (walls.c) */
     int wall_tree_n;                /* walls in the tree; those after it are looked at one by one */
     int clu_bodies, clu_contacts;  /* its capacities; 0 when the world has none */
@@ -479,6 +488,10 @@ static inline int cc__sort_due(const cc_world *w)
 }
 
 /* ---- props.c: per-body properties, filters, restitution mixing ---- */
+/* Whether the world reserved the circles' and walls' properties. Without them every body has
+ * its defaults, and no call can give it others (it is refused): the paths that read the block
+ * run only behind a w->features flag that such a world can never set. */
+static inline int cc__props_reserved(const cc_world *w) { return w->off_props != 0; }
 void cc__props_default(const cc_world *w, cc__props *p); /* a new circle's */
 /* Whether circles i and j interact (filters; sensors with sensors do not). */
 static inline int cc__filter_pass(const cc__props *a, const cc__props *b)

@@ -8,10 +8,12 @@
  *   byte 3  flags: bit 0 on_contact, bit 1 on_sensor, bit 2 periodic x, bit 3 periodic y,
  *           bit 4 a def of 1.0's size (the 1.1 fields hold garbage the library must ignore),
  *           bits 5-6 restitution_mix (with byte 4 bit 7: the invalid mix 4)
- *   byte 4  bits 0-3: which of rest_speed, cell_size, rolling_decel are nonzero; bit 6: the def is
- *           a later header's (struct_size past this one's: the 1.2 codes); bit 7 see above
+ *   byte 4  bits 0-3: which of rest_speed, cell_size, rolling_decel are nonzero; bits 4-5 the def's
+ *           uses (0: CC_USES_ALL, 1: 0, 2: SENSORS, 3: PROPS | ROLLING); bit 6: the def is a later
+ *           header's (struct_size past this one's: the 1.2 codes); bit 7 see above
  *   then    values: restitution, rest_speed, cell_size, rolling_decel, period x, period y (each
- *           a "value", below), max_events (2 bytes: 1 + v % 1000, v = 0xFFFF gives 0: invalid)
+ *           a "value", below), max_events (2 bytes: 1 + v % 1000, v = 0xFFFF gives 0: a 1.2 def's automatic cap,
+ *           invalid for a 1.0 def)
  *   then    calls: one opcode byte each (% OP_COUNT), then that call's arguments.
  * A value is one byte b: b < 12 a hostile double (NaN, +-Inf, 1e300, 1e-300, subnormals, -0,
  * DBL_MAX, ...) chosen by the next byte; b = 12 or 13 the raw 8 bytes that follow; otherwise an
@@ -175,6 +177,7 @@ typedef struct model {
     double call_t0;
     int ncb;
     int range_code, busy_code; /* CC_ERR_RANGE and CC_ERR_BUSY as this world's def knows them */
+    unsigned uses;             /* the def's CC_USES_* (ALL for a def too short to hold it) */
 } model;
 
 static model *g_cur; /* the world whose call is running (the callbacks find it here) */
@@ -895,6 +898,12 @@ static void do_props(model *m, reader *r, int set)
             REQUIRE(m, rc == CC_ERR_VERSION, "set_circle_props: a short struct_size not VERSION");
         else if (!valid)
             REQUIRE(m, rc == CC_ERR_INVALID, "set_circle_props: invalid values not INVALID");
+        else if (((want.restitution != m->props[id].restitution || want.category != m->props[id].category ||
+                   want.mask != m->props[id].mask) &&
+                  !(m->uses & CC_USES_PROPS)) ||
+                 (want.rolling_decel != m->props[id].rolling_decel && !(m->uses & (CC_USES_PROPS | CC_USES_ROLLING))) ||
+                 (!want.sensor != !m->props[id].sensor && !(m->uses & CC_USES_SENSORS)))
+            REQUIRE(m, rc == CC_ERR_INVALID, "set_circle_props: what the world did not reserve not INVALID");
         else
             REQUIRE(m, rc == CC_OK || rc == CC_ERR_FULL, "set_circle_props: valid call failed");
         if (rc == CC_OK) {
@@ -961,6 +970,10 @@ static void do_segprops(model *m, reader *r, int set)
             REQUIRE(m, rc == CC_ERR_VERSION, "set_segment_props: a short struct_size not VERSION");
         else if (!valid)
             REQUIRE(m, rc == CC_ERR_INVALID, "set_segment_props: invalid values not INVALID");
+        else if (!(m->uses & CC_USES_PROPS) &&
+                 (want.restitution != m->segprops[id].restitution || want.category != m->segprops[id].category ||
+                  want.mask != m->segprops[id].mask))
+            REQUIRE(m, rc == CC_ERR_INVALID, "set_segment_props: a world without props not INVALID");
         else
             REQUIRE(m, rc == CC_OK, "set_segment_props: a valid call failed");
         if (rc == CC_OK) {
@@ -1850,6 +1863,10 @@ void fuzz_world_one(const uint8_t *data, size_t size)
         xd.def.max_events = v == 0xFFFFu ? 0u : 1u + v % 1000u;
     }
     xd.def.restitution_mix = nz & 0x80u ? 4 : (int)((flags >> 5) & 3u);
+    {
+        static const unsigned uses_of[4] = {CC_USES_ALL, 0u, CC_USES_SENSORS, CC_USES_PROPS | CC_USES_ROLLING};
+        xd.def.uses = uses_of[(nz >> 4) & 3u];
+    }
     xd.def.on_contact = flags & 1u ? on_contact : NULL;
     xd.def.on_sensor = flags & 2u ? on_sensor : NULL;
     xd.def.user = &g_user;
@@ -1868,8 +1885,12 @@ void fuzz_world_one(const uint8_t *data, size_t size)
     m->restitution = xd.def.restitution, m->rest_speed = xd.def.rest_speed, m->cell_size = xd.def.cell_size;
     m->rmin = INFINITY, m->fast = 0;
     m->max_events = xd.def.max_events;
+    if (m->max_events == 0 && later) /* a 1.2 def's automatic cap (the header's Collapse) */
+        m->max_events = m->maxc > 312 ? 32u * (uint64_t)m->maxc : 10000u;
     m->has_contact_cb = xd.def.on_contact != NULL;
+    m->uses = CC_USES_ALL;
     if (!old_size) {
+        m->uses = xd.def.uses;
         m->decel = xd.def.rolling_decel, m->mix = xd.def.restitution_mix;
         m->period[0] = xd.def.period.x, m->period[1] = xd.def.period.y;
         m->has_sensor_cb = xd.def.on_sensor != NULL;
@@ -1881,7 +1902,8 @@ void fuzz_world_one(const uint8_t *data, size_t size)
     m->op = -1;
     valid = xd.def.mode >= 0 && xd.def.mode <= 2 && m->restitution >= 0.0 && m->restitution <= 1.0 &&
             m->rest_speed >= 0.0 && isfinite(m->rest_speed) && m->cell_size >= 0.0 && isfinite(m->cell_size) &&
-            m->max_events >= 1 && m->decel >= 0.0 && isfinite(m->decel) && m->mix >= 0 && m->mix <= 3;
+            m->max_events >= 1 && m->decel >= 0.0 && isfinite(m->decel) && m->mix >= 0 && m->mix <= 3 &&
+            !(m->decel > 0.0 && !(m->uses & CC_USES_ROLLING));
     {
         int k;
         for (k = 0; k < 2; k++) {

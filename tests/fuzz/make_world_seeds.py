@@ -137,6 +137,33 @@ def main():
                 body += [UNWRAPPED_ALL, brng.randrange(256), brng.randrange(4)]
                 body += calls(brng, 4, maxc, 0.0, 0.6)
             seeds["%s-%d" % (name, mode)] = body
+    # worlds that reserve only what they use (byte 4 bits 4-5: uses 0, SENSORS, PROPS | ROLLING):
+    # the property calls that need what the world left out are refused; their own rng
+    urng = random.Random(31)
+    for mode in range(3):
+        for name, maxc, maxs, flags, nz, kw in [
+            ("uses-none", 20, 4, 3, 0x10, {}),
+            ("uses-none-periodic", 30, 0, 3 | 4 | 8, 2 | 0x10, {"cell": 1.0, "px": 10.0, "py": 10.0}),
+            ("uses-sensors", 20, 4, 3, 0x20 | 0x40, {}),
+            ("uses-props-rolling", 16, 4, 3, 4 | 0x30, {"decel": 0.5}),
+            ("uses-none-rolling", 16, 0, 3, 4 | 0x10, {"decel": 0.5}),  # invalid: decel without ROLLING
+        ]:
+            body = defbytes(mode, maxc, maxs, flags, nz, **kw)
+            for _ in range(5):
+                body += [ADD] + circle(urng, 0.6)
+            if maxs:
+                body += [ADD_SEG] + [ORD(urng.random()) for _ in range(5)]
+            for _ in range(12):
+                body += calls(urng, 2, maxc, 0.0, 0.6)
+                if urng.random() < 0.7:  # a live id (b % (maxc + 1)), the whole struct, then its fields
+                    body += [SET_PROPS, maxc + 1 + urng.randrange(5), 0, ORD(urng.choice([1.0, urng.random()]))]
+                    body += [1, ORD(urng.random())] if urng.random() < 0.4 else [0]
+                    body += [urng.choice([0x80, 0x80, 2]), urng.choice([0x80, 0x80, 3])]
+                    body += [0, urng.randrange(256)] if urng.random() < 0.4 else [1]
+                else:  # wall 0
+                    body += [SET_SEGPROPS, maxc + 1, 0, ORD(urng.choice([1.0, urng.random()])),
+                             urng.choice([0x80, 2]), urng.choice([0x80, 3])]
+            seeds["%s-%d" % (name, mode)] = body
     for name, b in sorted(seeds.items()):
         with open(os.path.join(d, "seed-" + name), "wb") as f:
             f.write(bytes(b))

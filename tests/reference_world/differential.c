@@ -676,6 +676,10 @@ void dw_run_scene(uint64_t seed, dw_pairing pairing, unsigned long max_events, d
      * a rolling scene's pushed pair jams to it (1.1 has no carried contacts), so its cap is lower */
     def.max_events = sc.decel > 0.0 ? 1000 : 3000;
     def.restitution_mix = sc.props ? rng_int(&sc.rng, 4) : CC_MIX_MIN;
+    /* every other scene that sets no property runs in worlds that reserve nothing more than it
+     * uses (def.uses; no draw: the scenes stay as they were) */
+    if (!sc.props && (seed >> 1 & 1u))
+        def.uses = sc.decel > 0.0 ? CC_USES_ROLLING : 0u;
     if (rng_unit(&sc.rng) < 0.25) { /* a periodic box: a channel along x (walls along y), or a torus */
         int channel = rng_unit(&sc.rng) < 0.5;
         double b;

@@ -566,12 +566,15 @@ int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, rw_senso
 {
     if (w == NULL || def == NULL || def->mode != CC_MODE_EXACT || def->max_circles < 0 ||
         def->max_circles > RW_MAX_CIRCLES || def->max_segments < 0 || def->max_segments > RW_MAX_SEGMENTS ||
-        !(def->restitution >= 0.0 && def->restitution <= 1.0) || !(def->rest_speed >= 0.0))
+        !(def->restitution >= 0.0 && def->restitution <= 1.0) || !(def->rest_speed >= 0.0) ||
+        (def->rolling_decel > 0.0 && !(def->uses & CC_USES_ROLLING))) /* the header's uses rule */
         return CC_ERR_INVALID;
     memset(w, 0, sizeof *w);
     w->restitution = def->restitution;
     w->rest_speed = def->rest_speed;
     w->max_events = def->max_events;
+    if (w->max_events == 0) /* a 1.2 def's automatic cap (the header's "Collapse") */
+        w->max_events = def->max_circles > 312 ? 32u * (uint64_t)def->max_circles : 10000u;
     w->max_circles = def->max_circles;
     w->max_segments = def->max_segments;
     w->dirty = 1; /* "Before the first step ... this happens for all circles at the next step" */

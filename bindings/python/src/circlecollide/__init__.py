@@ -34,6 +34,7 @@ from ._pair import (
     sweep_segment_rolling,
 )
 from ._batch import sweep_many
+from ._lib import USES_ALL, USES_CLOTH, USES_PROPS, USES_ROLLING, USES_SENSORS
 from ._world import CastHit, CircleProps, ContactEvent, SegmentProps, SensorEvent, World, WorldStats
 
 __version__ = "1.2.0"
@@ -60,6 +61,11 @@ __all__ = [
     "LibraryVersionError",
     "SegmentProps",
     "SensorEvent",
+    "USES_ALL",
+    "USES_CLOTH",
+    "USES_PROPS",
+    "USES_ROLLING",
+    "USES_SENSORS",
     "Vec2",
     "World",
     "WorldStats",

@@ -104,6 +104,13 @@ MIX_MAX = 1
 MIX_PRODUCT = 2
 MIX_MEAN = 3
 
+# cc_world_def.uses bits (CC_USES_*, 1.2): what a world may use; it reserves memory for no more
+USES_PROPS = 1
+USES_SENSORS = 2
+USES_ROLLING = 4
+USES_CLOTH = 8
+USES_ALL = 0xFFFF
+
 #: CC_MAX_SENSORS: sensors a world holds at once
 MAX_SENSORS = 64
 
@@ -125,6 +132,8 @@ class cc_world_def(ctypes.Structure):
         ("restitution_mix", c_int),
         ("on_sensor", cc_sensor_fn),
         ("period", cc_vec2),
+        # 1.2
+        ("uses", ctypes.c_uint),
     ]
 
 

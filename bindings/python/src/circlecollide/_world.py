@@ -158,6 +158,18 @@ class World:
     keep ``restitution``: that value, or its square under ``"product"``). ``rolling_decel`` (>= 0)
     is the deceleration new movable circles get (rolling to rest). ``period=(px, py)``: a
     component > 0 makes the world wrap along that axis (positions kept in [0, period)).
+    ``uses`` (``USES_*`` bits, default ``USES_ALL``): what the world may use; its memory holds
+    no more (``uses=0``, 1.0's world, is the smallest and fastest), and a call that needs what
+    it left out (``set_circle_props`` with a restitution, filter, deceleration or sensor,
+    ``set_segment_props``, ``rolling_decel`` without ``USES_ROLLING``) raises
+    CircleCollideError (CC_ERR_INVALID), the world unchanged.
+
+    ``max_events`` (an int >= 1) caps the events of one exact ``step``; ``None`` (the default)
+    follows the C default, the automatic cap of 32 events per circle of ``max_circles`` and at
+    least 10,000 (the C header's "Collapse"), sized so that a step that jams returns within
+    about 0.2 s for 1,000 circles; ``step`` returns False at the cap. A long offline step (a
+    whole run in one call) passes a larger cap or steps again to the same end time
+    (``circlecollide.hard_disks.advance``).
 
     ``on_contact``, if given, is called with a ``ContactEvent`` for every impulse, and
     ``on_sensor`` with a ``SensorEvent`` for every sensor begin and end; both are also plain
@@ -197,6 +209,7 @@ class World:
         on_sensor: Optional[SensorCallback] = None,
         period: Iterable[float] = (0.0, 0.0),
         callbacks: Optional[bool] = None,
+        uses: int = _lib.USES_ALL,
     ) -> None:
         for name, v, names in (("mode", mode, MODES), ("restitution_mix", restitution_mix, MIXES)):
             if not isinstance(v, str):
@@ -224,6 +237,11 @@ class World:
         if px < 0 or py < 0:
             raise _errors.invalid("World", f"period must be >= 0 (0: open), got ({_errors.show(px)}, {_errors.show(py)})")
         d.period = _lib.cc_vec2(px, py)
+        if not 0 <= _errors.integer(uses, "uses", "World") <= _lib.USES_ALL:
+            raise _errors.invalid("World", f"uses must be USES_* bits in [0, USES_ALL], got {uses!r}")
+        d.uses = int(uses)
+        if d.rolling_decel != 0.0 and not d.uses & _lib.USES_ROLLING:
+            raise _errors.invalid("World", "rolling_decel needs uses to include USES_ROLLING")
         # a library older than these declarations ignores the fields beyond its def: refuse to
         # drop a setting silently
         asked = {
@@ -231,6 +249,7 @@ class World:
             "restitution_mix": d.restitution_mix != _lib.MIX_MIN,
             "on_sensor": on_sensor is not None,
             "period": (px, py) != (0.0, 0.0),
+            "uses": d.uses != _lib.USES_ALL,
         }
         for name, wanted in asked.items():
             if wanted and self._lib_def_size < _lib.field_end(_lib.cc_world_def, name):
@@ -282,6 +301,7 @@ class World:
             rolling_decel=d.rolling_decel,
             restitution_mix=restitution_mix,
             period=(px, py),
+            uses=d.uses,
         )
         self.max_circles = d.max_circles
         self.max_segments = d.max_segments
@@ -573,7 +593,8 @@ class World:
 
     def step(self, dt: float) -> bool:
         """Advances world time by dt. Returns False when the step stopped at max_events (the
-        world is consistent at the last event; call again to continue), True otherwise."""
+        world is consistent at the last event; call again with what is left of dt to continue,
+        as ``circlecollide.hard_disks.advance`` does), True otherwise."""
         self._mutating("step")
         dt = _errors.nonneg_finite(dt, "dt", "step")
         self._error = None

@@ -34,6 +34,7 @@ int main(void) {
     F(cc_world_def, rest_speed); F(cc_world_def, cell_size); F(cc_world_def, max_events);
     F(cc_world_def, on_contact); F(cc_world_def, user); F(cc_world_def, rolling_decel);
     F(cc_world_def, restitution_mix); F(cc_world_def, on_sensor); F(cc_world_def, period);
+    F(cc_world_def, uses);
     S(cc_world_stats); F(cc_world_stats, struct_size); F(cc_world_stats, collisions);
     F(cc_world_stats, events); F(cc_world_stats, stale_events); F(cc_world_stats, pairs_tested);
     F(cc_world_stats, cell_crossings); F(cc_world_stats, max_overlap); F(cc_world_stats, virial);
@@ -68,6 +69,7 @@ int main(void) {
     K(CC_MISS); K(CC_OK); K(CC_HIT); K(CC_OVERLAP); K(CC_EVENT_LIMIT); K(CC_ERR_INVALID);
     K(CC_ERR_NOT_FOUND); K(CC_ERR_FULL); K(CC_ERR_MEMORY); K(CC_ERR_VERSION); K(CC_ERR_RANGE); K(CC_ERR_BUSY);
     K(CC_MIX_MIN); K(CC_MIX_MAX); K(CC_MIX_PRODUCT); K(CC_MIX_MEAN); K(CC_MAX_SENSORS);
+    K(CC_USES_PROPS); K(CC_USES_SENSORS); K(CC_USES_ROLLING); K(CC_USES_CLOTH); K(CC_USES_ALL);
     printf("];\n");
     return 0;
 }

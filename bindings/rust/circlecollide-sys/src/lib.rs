@@ -118,6 +118,13 @@ pub const CC_MIX_MAX: c_int = 1;
 pub const CC_MIX_PRODUCT: c_int = 2;
 pub const CC_MIX_MEAN: c_int = 3;
 
+// cc_world_def.uses bits (1.2): what a world may use; it reserves memory for no more
+pub const CC_USES_PROPS: core::ffi::c_uint = 1;
+pub const CC_USES_SENSORS: core::ffi::c_uint = 2;
+pub const CC_USES_ROLLING: core::ffi::c_uint = 4;
+pub const CC_USES_CLOTH: core::ffi::c_uint = 8;
+pub const CC_USES_ALL: core::ffi::c_uint = 0xffff;
+
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct cc_world_def {
@@ -136,6 +143,8 @@ pub struct cc_world_def {
     pub restitution_mix: c_int,
     pub on_sensor: cc_sensor_fn,
     pub period: cc_vec2,
+    // 1.2
+    pub uses: core::ffi::c_uint,
 }
 
 #[repr(C)]

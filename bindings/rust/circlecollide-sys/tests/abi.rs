@@ -36,7 +36,7 @@ fn rust_table() -> Vec<(&'static str, &'static str, usize, usize)> {
         cc_circle_soa { px, py, vx, vy, radius }
         cc_contact_event { a, b, segment, t, point, normal, impulse }
         cc_sensor_event { sensor, visitor, begin, t }
-        cc_world_def { struct_size, max_circles, max_segments, mode, restitution, rest_speed, cell_size, max_events, on_contact, user, rolling_decel, restitution_mix, on_sensor, period }
+        cc_world_def { struct_size, max_circles, max_segments, mode, restitution, rest_speed, cell_size, max_events, on_contact, user, rolling_decel, restitution_mix, on_sensor, period, uses }
         cc_world_stats { struct_size, collisions, events, stale_events, pairs_tested, cell_crossings, max_overlap, virial, wall_impulse }
         cc_circle_props { struct_size, restitution, rolling_decel, category, mask, sensor }
         cc_segment_props { struct_size, restitution, category, mask }
@@ -232,7 +232,7 @@ fn header_defines(h: &str) -> Vec<String> {
 
 #[test]
 fn constants_match_the_header() {
-    let rust: [(&str, i64); 21] = [
+    let rust: [(&str, i64); 26] = [
         ("CC_VERSION_MAJOR", CC_VERSION_MAJOR.into()),
         ("CC_VERSION_MINOR", CC_VERSION_MINOR.into()),
         ("CC_VERSION_PATCH", CC_VERSION_PATCH.into()),
@@ -254,6 +254,11 @@ fn constants_match_the_header() {
         ("CC_MIX_PRODUCT", CC_MIX_PRODUCT.into()),
         ("CC_MIX_MEAN", CC_MIX_MEAN.into()),
         ("CC_MAX_SENSORS", CC_MAX_SENSORS.into()),
+        ("CC_USES_PROPS", CC_USES_PROPS.into()),
+        ("CC_USES_SENSORS", CC_USES_SENSORS.into()),
+        ("CC_USES_ROLLING", CC_USES_ROLLING.into()),
+        ("CC_USES_CLOTH", CC_USES_CLOTH.into()),
+        ("CC_USES_ALL", CC_USES_ALL.into()),
     ];
     assert_eq!(&rust[..], C_CONSTANTS, "(Rust, C)");
     // every integer macro of the header is among them (a new one must be added here and to

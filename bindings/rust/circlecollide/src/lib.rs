@@ -37,7 +37,8 @@ mod world;
 #[cfg(cc_has_world)]
 pub use world::{
     CastHit, CircleId, CircleProps, ContactEvent, Mode, Other, QueryFilter, RestitutionMix, SegmentId, SegmentProps,
-    SensorEvent, Stats, StepOutcome, World, WorldDef, MAX_CAPACITY, MAX_SENSORS,
+    SensorEvent, Stats, StepOutcome, World, WorldDef, MAX_CAPACITY, MAX_SENSORS, USES_ALL, USES_CLOTH, USES_PROPS,
+    USES_ROLLING, USES_SENSORS,
 };
 
 // ---- errors ------------------------------------------------------------------------------

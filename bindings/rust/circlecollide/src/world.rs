@@ -69,7 +69,11 @@ pub struct WorldDef {
     pub rest_speed: f64,
     /// Grid cell size; 0 = derived from the radii.
     pub cell_size: f64,
-    /// Cap on events per step.
+    /// Cap on events per [`Mode::Exact`] step, or 0 (the default, the C default): the automatic
+    /// cap of 32 events per circle of `max_circles` and at least 10,000 (the C header's
+    /// "Collapse"), so that a step that jams returns within about 0.2 s for 1,000 circles. A
+    /// step at the cap returns [`StepOutcome::EventLimit`]; a long offline step (a whole run in
+    /// one call) sets a larger cap or steps again to the same end time.
     pub max_events: u64,
     /// Deceleration (length / time^2, >= 0) of every movable circle rolling on the ground: a
     /// circle of speed s comes to rest after s / rolling_decel along a straight line. The value
@@ -81,7 +85,23 @@ pub struct WorldDef {
     /// [0, period); 0 leaves the axis open (default (0, 0)). Each period must be at least twice
     /// the largest circle diameter plus a cell. See [`World::unwrapped`].
     pub period: Vec2,
+    /// What the world may use (default [`USES_ALL`]): `USES_*` bits. Its memory holds no more
+    /// (0, 1.0's world, is the smallest and fastest), and a call that needs what it left out
+    /// (properties other than the defaults, a sensor, `rolling_decel` without
+    /// [`USES_ROLLING`]) is refused with `CC_ERR_INVALID`, the world unchanged.
+    pub uses: u32,
 }
+
+/// [`WorldDef::uses`]: per-body properties (restitution, filters, per-circle deceleration).
+pub const USES_PROPS: u32 = sys::CC_USES_PROPS;
+/// [`WorldDef::uses`]: sensor circles.
+pub const USES_SENSORS: u32 = sys::CC_USES_SENSORS;
+/// [`WorldDef::uses`]: `rolling_decel` or per-circle deceleration.
+pub const USES_ROLLING: u32 = sys::CC_USES_ROLLING;
+/// [`WorldDef::uses`]: spin (cloth).
+pub const USES_CLOTH: u32 = sys::CC_USES_CLOTH;
+/// [`WorldDef::uses`]: everything (the default).
+pub const USES_ALL: u32 = sys::CC_USES_ALL;
 
 impl Default for WorldDef {
     fn default() -> Self {
@@ -106,6 +126,7 @@ impl Default for WorldDef {
                 _ => RestitutionMix::Min,
             },
             period: Vec2::new(d.period.x, d.period.y),
+            uses: d.uses,
         }
     }
 }
@@ -534,6 +555,7 @@ impl<'cb> World<'cb> {
         d.rolling_decel = def.rolling_decel;
         d.restitution_mix = def.restitution_mix.to_c();
         d.period = sys::cc_vec2 { x: def.period.x, y: def.period.y };
+        d.uses = def.uses;
         let (has_contact, has_sensor) = (cb.is_some(), sensor_cb.is_some());
         let slot = if has_contact || has_sensor {
             Box::into_raw(Box::new(Slot { f: cb, sensor: sensor_cb, panic: None }))
@@ -1021,9 +1043,11 @@ fn def_refusal(status: c_int, def: &WorldDef) -> Error {
         cause::nonneg_finite("rest_speed", def.rest_speed),
         cause::nonneg_finite("cell_size", def.cell_size),
         cause::nonneg_finite("rolling_decel", def.rolling_decel),
-        (def.max_events == 0).then(|| "max_events must be >= 1, got 0".to_string()),
         cause::nonneg_finite("period.x", def.period.x),
         cause::nonneg_finite("period.y", def.period.y),
+        (def.uses > USES_ALL).then(|| format!("uses = {:#x} has bits beyond USES_ALL", def.uses)),
+        (def.rolling_decel > 0.0 && def.uses & USES_ROLLING == 0)
+            .then(|| "rolling_decel > 0 needs uses to include USES_ROLLING".to_string()),
     ];
     if let Some(detail) = causes.into_iter().flatten().next() {
         return Error::new(code, CALL, detail);
