@@ -36,8 +36,8 @@ void bench_scene_free(bench_scene *s);
  * side, the world's period along x and y, goes to *side. */
 void bench_scene_disks(bench_scene *s, int n, double phi, uint64_t seed, double *side);
 
-/* cc_world_step through its event caps (each CC_EVENT_LIMIT continued at once); a failure ends
- * the program with `who` in the message. */
+/* cc_world_step through its event caps (each CC_EVENT_LIMIT continued at once to the same end
+ * time); a failure ends the program with `who` in the message. */
 void bench_step(cc_world *w, double dt, const char *who);
 
 /* The world's counters (cc_world_get_stats with struct_size set). */

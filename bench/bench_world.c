@@ -721,6 +721,91 @@ static double jam_run(int n, uint64_t cap, int jam, uint64_t *events)
     return t1 - t0;
 }
 
+/* The automatic cap of a 1.2 def (max_events = 0): a jammed step's time at N = 100 and 1,000
+ * circles, and what ordinary steps spend of it: a pool break taken in one call and in 1/60 s
+ * steps, and a periodic gas (area fraction 0.5) stepped a few collisions per disk per call, its
+ * largest step in events per circle (the cap is 32 per circle: the margin is their ratio). */
+static void jam_auto(const opts *o)
+{
+    static const int ns[2] = {100, 1000};
+    int a, k, rep;
+    for (a = 0; a < 2; a++) {
+        double t[3], lo, hi, tmed;
+        uint64_t ev = 0;
+        for (rep = 0; rep < 3; rep++)
+            t[rep] = jam_run(ns[a], 0u, 1, &ev);
+        bench_range(t, 3, &lo, &hi);
+        tmed = bench_median(t, 3);
+        printf("jam of %d circles, automatic cap: %llu events, %.3g s (%.3g-%.3g), %.3g us/event\n", ns[a],
+               (unsigned long long)ev, tmed, lo, hi, 1e6 * tmed / (double)ev);
+        printf("figure jam_auto_seconds_n%d %.4g\n", ns[a], tmed);
+    }
+    for (k = 0; k < 2; k++) { /* the pool break: in one call of its whole 2 s, then at 1/60 s */
+        bench_scene sc;
+        cc_world_def def;
+        world_box b;
+        cc_world_stats s0, s1;
+        uint64_t most = 0;
+        int i, st, capped = 0, steps = k ? 120 : 1;
+        bench_scene_pool(&sc);
+        cc_world_def_init(&def);
+        def.max_circles = sc.n;
+        def.max_segments = sc.n_walls;
+        b.bytes = cc_world_size(&def);
+        b.mem = bench_alloc(b.bytes);
+        b.w = cc_world_init(b.mem, b.bytes, &def, &st);
+        for (i = 0; i < sc.n_walls; i++)
+            (void)cc_world_add_segment(b.w, &sc.walls[i]);
+        for (i = 0; i < sc.n; i++)
+            (void)cc_world_add_circle(b.w, &sc.c[i]);
+        for (i = 0; i < steps; i++) {
+            s0 = bench_stats(b.w);
+            capped += cc_world_step(b.w, sc.t_end / steps) == CC_EVENT_LIMIT;
+            s1 = bench_stats(b.w);
+            if (s1.events - s0.events > most)
+                most = s1.events - s0.events;
+        }
+        printf("pool break in %d step%s (automatic cap 10000): at most %llu events a step, %d capped\n", steps,
+               steps > 1 ? "s" : "", (unsigned long long)most, capped);
+        printf("figure jam_auto_pool_events_%d_steps %llu\n", steps, (unsigned long long)most);
+        bench_scene_free(&sc);
+        world_free(&b);
+    }
+    for (k = 0; k < 2; k++) { /* a periodic gas of 1,000 disks, calls of dt 0.5 and 2 */
+        const int n = 1000, steps = o->quick ? 10 : 40;
+        const double dt = k ? 2.0 : 0.5;
+        bench_scene sc;
+        cc_world_def def;
+        world_box b;
+        cc_world_stats s0, s1;
+        double side, most = 0.0, coll = 0.0;
+        int i, st, capped = 0;
+        bench_scene_disks(&sc, n, 0.5, 36, &side);
+        cc_world_def_init(&def);
+        def.max_circles = n;
+        def.period.x = def.period.y = side;
+        b.bytes = cc_world_size(&def);
+        b.mem = bench_alloc(b.bytes);
+        b.w = cc_world_init(b.mem, b.bytes, &def, &st);
+        for (i = 0; i < n; i++)
+            (void)cc_world_add_circle(b.w, &sc.c[i]);
+        bench_scene_free(&sc);
+        step(b.w, 5.0); /* away from the lattice */
+        for (i = 0; i < steps; i++) {
+            s0 = bench_stats(b.w);
+            capped += cc_world_step(b.w, dt) == CC_EVENT_LIMIT;
+            s1 = bench_stats(b.w);
+            if ((double)(s1.events - s0.events) / n > most)
+                most = (double)(s1.events - s0.events) / n;
+            coll += 2.0 * (double)(s1.collisions - s0.collisions) / n;
+        }
+        printf("periodic gas of %d disks, phi 0.5, steps of %g: %.2f collisions per disk a step, at most %.2f "
+               "events per circle a step (cap 32), %d capped\n", n, dt, coll / steps, most, capped);
+        printf("figure jam_auto_gas_events_per_circle_dt%g %.4g\n", dt, most);
+        world_free(&b);
+    }
+}
+
 static int cmd_jam(const opts *o)
 {
     static const uint64_t caps[] = {10000, 100000, 1000000};
@@ -745,6 +830,7 @@ static int cmd_jam(const opts *o)
         printf("figure jam_over_gas_per_event_cap_%llu %.4g\n", (unsigned long long)caps[k],
                1e6 * tmed / (double)ev / gas_us);
     }
+    jam_auto(o);
     return 0;
 }
 

@@ -84,6 +84,7 @@ static inline const char *hd_box_make(hd_box *s, int n, double eta, cc_circle *c
     d.restitution = 1.0;
     d.period.x = s->box;
     d.period.y = s->box;
+    d.max_events = 10000000u; /* blocks of many collisions per disk in one call: an offline run */
     bytes = cc_world_size(&d);
     if (bytes == 0)
         return "cc_world_size";

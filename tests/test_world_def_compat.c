@@ -89,6 +89,7 @@ static void test_a_1_0_or_1_1_def_uses_everything(void)
         memset(&d, 0xA5, sizeof d);
         memcpy(&d, &full, sizes[k]);
         d.struct_size = sizes[k];
+        d.max_events = 10000000u; /* a 1.0 or 1.1 header's default (full's 0 is 1.2's automatic cap) */
         if (k == 1)
             d.rolling_decel = 0.0;
         else

@@ -19,6 +19,7 @@ static cc_world *periodic(tw_mem *m, int mode, double px, double py, int max_cir
     d.max_segments = max_segments;
     d.period.x = px;
     d.period.y = py;
+    d.max_events = 10000000u; /* some steps cross 5e4 cells or run whole gases in one call */
     return tw_make(m, &d, 0);
 }
 

@@ -20,6 +20,7 @@ cc_add_test(NAME test_world_fuzz_defects SOURCES test_world_fuzz_defects.c LABEL
 cc_add_test(NAME test_world_step SOURCES test_world_step.c LABELS world)
 cc_add_test(NAME test_world_def_compat SOURCES test_world_def_compat.c LABELS world)
 cc_add_test(NAME test_world_uses SOURCES test_world_uses.c LABELS world)
+cc_add_test(NAME test_world_event_cap SOURCES test_world_event_cap.c LABELS world)
 cc_add_test(NAME test_world_calendar SOURCES test_world_calendar.c LABELS world)
 cc_add_test(NAME test_world_gas_scans SOURCES test_world_gas_scans.c LABELS world)
 cc_add_test(NAME test_world_soak SOURCES test_world_soak.c LABELS world TIMEOUT 300)

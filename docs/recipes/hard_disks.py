@@ -16,7 +16,8 @@ N, ETA, KT = 400, 0.30, 1.0
 side = math.sqrt(N * math.pi * 0.25 / ETA)  # the box's side for N disks of radius 1/2
 rng = np.random.default_rng(7)
 
-w = World(max_circles=N, period=(side, side))
+# whole runs in one call (some 500 collisions per disk): an offline step's cap, not the automatic one
+w = World(max_circles=N, period=(side, side), max_events=10**7)
 k = int(math.ceil(math.sqrt(N)))
 v = rng.normal(0.0, math.sqrt(KT), size=(N, 2))  # Maxwell-Boltzmann at kT, mass 1
 v -= v.mean(axis=0)  # no drift

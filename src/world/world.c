@@ -18,6 +18,21 @@
 /* The def of 1.0: its fields end at user. */
 #define CC__DEF_1_0 (offsetof(cc_world_def, user) + sizeof(void *))
 
+/* max_events of a def from a 1.0 or 1.1 header, which its programs rely on for long offline steps. */
+#define CC__EVENTS_1_1 10000000u
+
+/* The automatic cap of a 1.2 def (max_events = 0): CC__EVENTS_PER_CIRCLE events per circle of
+ * max_circles, at least CC__EVENTS_MIN, so that a step that jams returns within a game's patience
+ * (the header's "Collapse" has the measured costs) while an ordinary step never meets it. */
+#define CC__EVENTS_PER_CIRCLE 32u
+#define CC__EVENTS_MIN 10000u
+
+static uint64_t cc__auto_events(int max_circles)
+{
+    uint64_t n = (uint64_t)CC__EVENTS_PER_CIRCLE * (uint64_t)(max_circles > 0 ? max_circles : 0);
+    return n > CC__EVENTS_MIN ? n : CC__EVENTS_MIN;
+}
+
 /* Every default into a whole def of this library's size. */
 static void cc__def_defaults(cc_world_def *def)
 {
@@ -29,7 +44,7 @@ static void cc__def_defaults(cc_world_def *def)
     def->restitution = 1.0;
     def->rest_speed = 0.0;
     def->cell_size = 0.0;
-    def->max_events = 10000000u;
+    def->max_events = 0; /* automatic, from max_circles (a 1.0 or 1.1 def: CC__EVENTS_1_1) */
     def->on_contact = NULL;
     def->user = NULL;
     def->rolling_decel = 0.0;
@@ -63,6 +78,8 @@ CC_API void cc_world_def_init_sized(cc_world_def *def, size_t struct_size)
         memset((unsigned char *)def + sizeof d, 0, struct_size - sizeof d);
     else
         memset(def, 0, struct_size);
+    if (!cc__def_knows_1_2(struct_size))
+        d.max_events = CC__EVENTS_1_1;
     memcpy(def, &d, cc__whole_fields(struct_size, cc__def_ends, (int)(sizeof cc__def_ends / sizeof cc__def_ends[0])));
     def->struct_size = struct_size;
 }
@@ -100,12 +117,15 @@ static int cc__read_def(const cc_world_def *in, cc_world_def *out)
     if (in->struct_size < CC__DEF_MIN)
         return CC_ERR_VERSION;
     cc__def_defaults(out);
+    if (!cc__def_knows_1_2(in->struct_size))
+        out->max_events = CC__EVENTS_1_1; /* also for a def that ends before max_events */
     memcpy(out, in, cc__whole_fields(in->struct_size, cc__def_ends, (int)(sizeof cc__def_ends / sizeof cc__def_ends[0])));
     out->struct_size = sizeof *out;
     if (out->max_circles < 0 || out->max_segments < 0 || out->mode < CC_MODE_EXACT || out->mode > CC_MODE_DISCRETE ||
         !(out->restitution >= 0.0 && out->restitution <= 1.0) ||
         !(out->rest_speed >= 0.0 && isfinite(out->rest_speed)) ||
-        !(out->cell_size >= 0.0 && isfinite(out->cell_size)) || out->max_events == 0 ||
+        !(out->cell_size >= 0.0 && isfinite(out->cell_size)) ||
+        (out->max_events == 0 && !cc__def_knows_1_2(in->struct_size)) ||
         !(out->rolling_decel >= 0.0 && isfinite(out->rolling_decel)) || out->restitution_mix < CC_MIX_MIN ||
         out->restitution_mix > CC_MIX_MEAN || !cc__period_ok(out->period.x) || !cc__period_ok(out->period.y) ||
         (out->uses & ~CC_USES_ALL) != 0 || (out->rolling_decel > 0.0 && !(out->uses & CC_USES_ROLLING)))
@@ -240,7 +260,7 @@ CC_API cc_world *cc_world_init(void *memory, size_t bytes, const cc_world_def *d
     w->restitution = d.restitution;
     w->rest_speed = d.rest_speed;
     w->cell_hint = d.cell_size;
-    w->max_events = d.max_events;
+    w->max_events = d.max_events != 0 ? d.max_events : cc__auto_events(d.max_circles);
     w->on_contact = d.on_contact;
     w->user = d.user;
     w->on_sensor = d.on_sensor;

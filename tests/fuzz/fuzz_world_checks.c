@@ -12,7 +12,8 @@
  *           uses (0: CC_USES_ALL, 1: 0, 2: SENSORS, 3: PROPS | ROLLING); bit 6: the def is a later
  *           header's (struct_size past this one's: the 1.2 codes); bit 7 see above
  *   then    values: restitution, rest_speed, cell_size, rolling_decel, period x, period y (each
- *           a "value", below), max_events (2 bytes: 1 + v % 1000, v = 0xFFFF gives 0: invalid)
+ *           a "value", below), max_events (2 bytes: 1 + v % 1000, v = 0xFFFF gives 0: a 1.2 def's automatic cap,
+ *           invalid for a 1.0 def)
  *   then    calls: one opcode byte each (% OP_COUNT), then that call's arguments.
  * A value is one byte b: b < 12 a hostile double (NaN, +-Inf, 1e300, 1e-300, subnormals, -0,
  * DBL_MAX, ...) chosen by the next byte; b = 12 or 13 the raw 8 bytes that follow; otherwise an
@@ -1884,6 +1885,8 @@ void fuzz_world_one(const uint8_t *data, size_t size)
     m->restitution = xd.def.restitution, m->rest_speed = xd.def.rest_speed, m->cell_size = xd.def.cell_size;
     m->rmin = INFINITY, m->fast = 0;
     m->max_events = xd.def.max_events;
+    if (m->max_events == 0 && later) /* a 1.2 def's automatic cap (the header's Collapse) */
+        m->max_events = m->maxc > 312 ? 32u * (uint64_t)m->maxc : 10000u;
     m->has_contact_cb = xd.def.on_contact != NULL;
     m->uses = CC_USES_ALL;
     if (!old_size) {

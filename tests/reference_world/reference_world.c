@@ -573,6 +573,8 @@ int rw_init(rw_world *w, const cc_world_def *def, rw_event_fn on_event, rw_senso
     w->restitution = def->restitution;
     w->rest_speed = def->rest_speed;
     w->max_events = def->max_events;
+    if (w->max_events == 0) /* a 1.2 def's automatic cap (the header's "Collapse") */
+        w->max_events = def->max_circles > 312 ? 32u * (uint64_t)def->max_circles : 10000u;
     w->max_circles = def->max_circles;
     w->max_segments = def->max_segments;
     w->dirty = 1; /* "Before the first step ... this happens for all circles at the next step" */

@@ -175,7 +175,8 @@ def test_world_def_init_writes_exactly_our_def():
     d, lib_size = _lib.world_def_defaults()
     assert lib_size == ctypes.sizeof(_lib.cc_world_def)
     assert d.struct_size == ctypes.sizeof(_lib.cc_world_def)
-    assert (d.max_circles, d.restitution, d.max_events, d.restitution_mix) == (64, 1.0, 10000000, _lib.MIX_MIN)
+    # max_events 0: a 1.2 def's automatic cap (a 1.0 def keeps 10,000,000, below)
+    assert (d.max_circles, d.restitution, d.max_events, d.restitution_mix) == (64, 1.0, 0, _lib.MIX_MIN)
     assert (d.rolling_decel, d.period.x, d.period.y) == (0.0, 0.0, 0.0)
     assert not d.on_contact and not d.on_sensor
     # and the library writes nothing beyond that size
@@ -187,6 +188,7 @@ def test_world_def_init_writes_exactly_our_def():
     room = (ctypes.c_ubyte * (ctypes.sizeof(_lib.cc_world_def) + 256))(*([0xA5] * (ctypes.sizeof(_lib.cc_world_def) + 256)))
     _lib.lib.cc_world_def_init(ctypes.cast(room, ctypes.POINTER(_lib.cc_world_def)))
     assert _lib.cc_world_def.from_buffer_copy(room).struct_size == end_1_0
+    assert _lib.cc_world_def.from_buffer_copy(room).max_events == 10000000
     assert bytes(room[end_1_0:]) == b"\xa5" * (len(room) - end_1_0)
 
 

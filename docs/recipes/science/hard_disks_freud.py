@@ -74,7 +74,7 @@ def run(eta, n=1024, frames=160, blocks=8, equil=1000.0, seed=3):
                                 normalization_mode="finite_size")  # fmt: skip
         s0, t0 = world.stats, world.time
         for _ in range(per_block):
-            world.step(1.0 / rate)  # about one collision per disk between frames
+            hard_disks.advance(world, 1.0 / rate)  # about one collision per disk between frames
             box, points = system(world)
             rdf.compute((box, points), reset=False)
             rdf_all.compute((box, points), reset=False)

@@ -164,6 +164,13 @@ class World:
     ``set_segment_props``, ``rolling_decel`` without ``USES_ROLLING``) raises
     CircleCollideError (CC_ERR_INVALID), the world unchanged.
 
+    ``max_events`` (an int >= 1) caps the events of one exact ``step``; ``None`` (the default)
+    follows the C default, the automatic cap of 32 events per circle of ``max_circles`` and at
+    least 10,000 (the C header's "Collapse"), sized so that a step that jams returns within
+    about 0.2 s for 1,000 circles; ``step`` returns False at the cap. A long offline step (a
+    whole run in one call) passes a larger cap or steps again to the same end time
+    (``circlecollide.hard_disks.advance``).
+
     ``on_contact``, if given, is called with a ``ContactEvent`` for every impulse, and
     ``on_sensor`` with a ``SensorEvent`` for every sensor begin and end; both are also plain
     attributes, settable at any time on a world that has them: ``callbacks`` (default: whether
@@ -586,7 +593,8 @@ class World:
 
     def step(self, dt: float) -> bool:
         """Advances world time by dt. Returns False when the step stopped at max_events (the
-        world is consistent at the last event; call again to continue), True otherwise."""
+        world is consistent at the last event; call again with what is left of dt to continue,
+        as ``circlecollide.hard_disks.advance`` does), True otherwise."""
         self._mutating("step")
         dt = _errors.nonneg_finite(dt, "dt", "step")
         self._error = None

@@ -69,7 +69,11 @@ pub struct WorldDef {
     pub rest_speed: f64,
     /// Grid cell size; 0 = derived from the radii.
     pub cell_size: f64,
-    /// Cap on events per step.
+    /// Cap on events per [`Mode::Exact`] step, or 0 (the default, the C default): the automatic
+    /// cap of 32 events per circle of `max_circles` and at least 10,000 (the C header's
+    /// "Collapse"), so that a step that jams returns within about 0.2 s for 1,000 circles. A
+    /// step at the cap returns [`StepOutcome::EventLimit`]; a long offline step (a whole run in
+    /// one call) sets a larger cap or steps again to the same end time.
     pub max_events: u64,
     /// Deceleration (length / time^2, >= 0) of every movable circle rolling on the ground: a
     /// circle of speed s comes to rest after s / rolling_decel along a straight line. The value
@@ -1039,7 +1043,6 @@ fn def_refusal(status: c_int, def: &WorldDef) -> Error {
         cause::nonneg_finite("rest_speed", def.rest_speed),
         cause::nonneg_finite("cell_size", def.cell_size),
         cause::nonneg_finite("rolling_decel", def.rolling_decel),
-        (def.max_events == 0).then(|| "max_events must be >= 1, got 0".to_string()),
         cause::nonneg_finite("period.x", def.period.x),
         cause::nonneg_finite("period.y", def.period.y),
         (def.uses > USES_ALL).then(|| format!("uses = {:#x} has bits beyond USES_ALL", def.uses)),

@@ -131,3 +131,25 @@ fn a_panic_in_the_callback_during_add_circle_reaches_the_caller_from_add_circle(
     drop(w);
     assert!(n >= 2, "{n}");
 }
+
+/// A jam (a kinematic circle pushing rolling ones: every step ends at the cap): the step's
+/// outcome and the events it processed.
+fn jam(def: WorldDef) -> (StepOutcome, u64) {
+    let mut w = World::new(&WorldDef { restitution: 0.5, rolling_decel: 0.5, ..def }).unwrap();
+    for i in 0..5 {
+        w.add_circle(&Circle::new(v(i as f64 * 2.2, 0.0), 1.0)).unwrap();
+    }
+    w.add_circle(&Circle::new(v(-3.0, 0.0), 1.0).with_vel(v(1.0, 0.0)).immovable()).unwrap();
+    w.step(0.0).unwrap();
+    let r = w.step(30.0).unwrap();
+    (r, w.stats().events)
+}
+
+#[test]
+fn the_default_event_cap_is_automatic_and_an_explicit_one_is_kept() {
+    // the C default: 0, 32 events per circle of max_circles, at least 10,000
+    assert_eq!(WorldDef::default().max_events, 0);
+    assert_eq!(jam(def(6, 0)), (StepOutcome::EventLimit, 10_000));
+    assert_eq!(jam(def(400, 0)), (StepOutcome::EventLimit, 12_800));
+    assert_eq!(jam(WorldDef { max_events: 123, ..def(6, 0) }), (StepOutcome::EventLimit, 123));
+}
