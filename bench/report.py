@@ -199,10 +199,10 @@ def section_uses(res, w, command=None):
       "ALL). Both run the same collisions (the count is the first round's). The properties' "
       "48 bytes a circle are what uses = 0 saves: no path of a plain scene reads them, so what it "
       "changes in time is the memory a large world spreads over, and the noise of a shared machine. "
-      "Where uses.txt holds more than one run (the same build, one after the other), each is shown: "
-      "at N = 1e4 they agree (no difference beyond the spread); at N = 1e6 the per-round ratios of "
-      "one run lie all below 1 and of the other all above, the machine's (memory and its pages, the "
-      "other jobs) rather than the world's, which reads the same memory either way.")
+      "Where uses.txt holds more than one run, each is shown: their ratios scatter around 1 (at "
+      "N = 1e6 the per-round ratios of one run lie all below 1 and of another all above), the "
+      "machine's (memory and its pages, the other jobs) rather than the world's, which reads the "
+      "same memory either way.")
     w("")
     w("```")
     w("\n".join(l for l in text.strip("\n").splitlines() if not l.startswith("figure ")))

@@ -257,9 +257,9 @@ CC_API long cc_sweep_many(size_t n, const cc_circle_soa *a, const cc_circle_soa 
  *           even into its own block, so a world may be copied (memcpy) to other 8-byte aligned
  *           memory of the same size and used from there (while a call that fires callbacks
  *           runs it holds its own address as a number, never followed: see "Snapshots"). It keeps no pointer to the caller's
- *           defs, circles or segments (it copies them). About 160 to 170 bytes per circle in
- *           EXACT for a world of def.uses = 0 (one 64-byte line of hot state, the predicted
- *           event, queue and grid entries; 150 to 160 in SWEPT and DISCRETE), 48 more where uses
+ *           defs, circles or segments (it copies them). About 157 (N = 1e6) to 165 (N = 1e4)
+ *           bytes per circle in EXACT for a world of def.uses = 0 (one 64-byte line of hot state,
+ *           the predicted event, queue and grid entries; 148 to 154 in SWEPT and DISCRETE), 48 more where uses
  *           lists CC_USES_PROPS, SENSORS or ROLLING (the properties: every world of a 1.0 or 1.1
  *           def, and the default), 8 more in a periodic world (its count of turns); plus about
  *           200 per wall (the wall and its place in the walls' tree, and with those uses its

@@ -15,7 +15,7 @@ static void collect(void *ctx, int j, int seg)
 {
     (void)ctx;
     if (g_n < 16) {
-        g_ids[g_n] = j >= 0 ? CC__ARR(g_w, int32_t, off_idx2id)[j] : -1;
+        g_ids[g_n] = j >= 0 ? cc__idx2id(g_w, j) : -1;
         g_segs[g_n] = seg;
     }
     g_n++;

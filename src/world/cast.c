@@ -67,7 +67,7 @@ static void cc__cast_visit(void *ctx, int j, double sx, double sy)
     r = cc__sweep_rel(dp, cc__v(-c->d.x, -c->d.y), eL ? R * 0.5 : R, eL, 0, 1.0, &t, &n);
     if (r != CC_HIT && r != CC_OVERLAP)
         return;
-    id = CC__CARR(w, int32_t, off_idx2id)[j];
+    id = cc__idx2id(w, j);
     cc__offer(c, r == CC_OVERLAP ? 0.0 : t, r == CC_HIT, 0, id, n);
 }
 

@@ -111,7 +111,7 @@ static void cc__query_visit(void *ctx, int j, double sx, double sy)
         if (!(cc__cmp_dist(dx, dy, R) < 0)) /* (NaN: not within) */
             return;
     }
-    cc__keep(q, CC__CARR(w, int32_t, off_idx2id)[j]);
+    cc__keep(q, cc__idx2id(w, j));
 }
 
 /* Along a periodic axis the query (a disc's centre: lo = hi; or a box) is taken to its image

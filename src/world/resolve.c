@@ -31,8 +31,8 @@ void cc__world_report(cc_world *w, int a, int b, int seg, const cc_contact *k, d
         w->stats.wall_impulse += impulse;
     if (w->on_contact == NULL)
         return;
-    e.a = CC__CARR(w, int32_t, off_idx2id)[a]; /* the caller's ids, not storage indices */
-    e.b = b >= 0 ? CC__CARR(w, int32_t, off_idx2id)[b] : -1;
+    e.a = cc__idx2id(w, a); /* the caller's ids, not storage indices */
+    e.b = b >= 0 ? cc__idx2id(w, b) : -1;
     e.segment = seg;
     e.t = w->now;
     e.point = k->point;

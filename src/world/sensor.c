@@ -30,13 +30,12 @@ static int cc__inside(const cc_world *w, int s, int v)
 static void cc__report(cc_world *w, int s, int v, int begin)
 {
     cc__props *P = CC__ARR(w, cc__props, off_props);
-    const int32_t *idx2id = CC__CARR(w, int32_t, off_idx2id);
     cc_sensor_event e;
     P[v].inside ^= (uint64_t)1 << P[s].sensor;
     if (w->on_sensor == NULL)
         return;
-    e.sensor = idx2id[s];
-    e.visitor = idx2id[v];
+    e.sensor = cc__idx2id(w, s);
+    e.visitor = cc__idx2id(w, v);
     e.begin = begin;
     e.t = w->now;
     w->on_sensor(&e, w->user);

@@ -1,6 +1,6 @@
 /* Storage order: EXACT keeps circles in memory in the order of their grid cells along a Morton
  * (Z-order) curve, so that the circles a neighbour search visits sit close together in memory.
- * Ids never change: id2idx / idx2id map the API's ids to storage indices. A sort permutes the
+ * Ids never change: id2idx and the events' id (cc__idx2id) map the API's ids to storage indices. A sort permutes the
  * storage in place (no memory beyond the world's own: the queue's array, rebuilt afterwards,
  * holds the sort keys), then refiles every circle and predicts again. It runs at a step's start
  * after a rebuild and then whenever the queue has processed about 64 events per circle since
@@ -69,7 +69,7 @@ void cc__sort_bodies(cc_world *w)
     cc__props *P = CC__ARR(w, cc__props, off_props);
     int32_t *W = CC__ARR(w, int32_t, off_wrap);
     int props = cc__props_reserved(w), wrap = w->off_wrap != 0;
-    int32_t *idx2id = CC__ARR(w, int32_t, off_idx2id), *id2idx = CC__ARR(w, int32_t, off_id2idx);
+    int32_t *id2idx = CC__ARR(w, int32_t, off_id2idx);
     int32_t *hpos = CC__ARR(w, int32_t, off_hpos);
     cc__sort_entry *e = CC__ARR(w, cc__sort_entry, off_heap); /* the queue is rebuilt below */
     int n = w->id_end, p;
@@ -91,7 +91,7 @@ void cc__sort_bodies(cc_world *w)
         cc__cold tc;
         cc__event te;
         cc__props tp;
-        int32_t tid, tw[2] = {0, 0};
+        int32_t tw[2] = {0, 0};
         int q = p;
         if (e[p].done)
             continue;
@@ -106,7 +106,6 @@ void cc__sort_bodies(cc_world *w)
             tw[0] = W[2 * p];
             tw[1] = W[2 * p + 1];
         }
-        tid = idx2id[p];
         for (;;) {
             int src = e[q].idx;
             e[q].done = 1;
@@ -120,7 +119,6 @@ void cc__sort_bodies(cc_world *w)
                     W[2 * q] = tw[0];
                     W[2 * q + 1] = tw[1];
                 }
-                idx2id[q] = tid;
                 break;
             }
             B[q] = B[src];
@@ -132,12 +130,11 @@ void cc__sort_bodies(cc_world *w)
                 W[2 * q] = W[2 * src];
                 W[2 * q + 1] = W[2 * src + 1];
             }
-            idx2id[q] = idx2id[src];
             q = src;
         }
     }
     for (p = 0; p < n; p++)
-        id2idx[idx2id[p]] = p;
+        id2idx[EV[p].id] = p; /* (the event carried its circle's id along) */
     /* every index changed: grid lists, queue and the partners of events are rebuilt */
     cc__grid_clear(w);
     w->heap_n = 0;

@@ -190,7 +190,7 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
     sizes[6] = (size_t)cc__slots(d) * sizeof(int32_t);
     sizes[7] = (size_t)d->max_segments * sizeof(cc_segment);
     sizes[8] = n * sizeof(int32_t);  /* id -> index */
-    sizes[9] = n * sizeof(int32_t); /* index -> id */
+    sizes[9] = 0; /* index -> id: in the events (cc__idx2id) */
     sizes[10] = cc__cluster_block(d->max_circles, d->mode, &clu_b, &clu_c); /* EXACT's clusters */
     sizes[11] = props ? n * sizeof(cc__props) : 0;
     sizes[12] = props ? (size_t)d->max_segments * sizeof(cc__segment_props) : 0;
@@ -213,7 +213,6 @@ static size_t cc__layout(const cc_world_def *d, cc_world *w)
         w->off_slot = offs[6];
         w->off_seg = offs[7];
         w->off_id2idx = offs[8];
-        w->off_idx2id = offs[9];
         w->off_clu = offs[10];
         w->off_props = props ? offs[11] : 0;
         w->off_segprops = props ? offs[12] : 0;
@@ -421,7 +420,7 @@ CC_API int cc_world_add_circle(cc_world *w, const cc_circle *c)
     } else {
         id = w->id_end++;
         CC__ARR(w, int32_t, off_id2idx)[id] = id;
-        CC__ARR(w, int32_t, off_idx2id)[id] = id;
+        CC__ARR(w, cc__event, off_ev)[id].id = id;
         CC__ARR(w, cc__body, off_body)[id].count = 0; /* first use of this slot of memory */
     }
     w->n_circles++;

@@ -88,10 +88,12 @@ typedef struct cc__segment_props {
 typedef struct cc__event {
     double t;       /* absolute time of the hit, +INFINITY when none */
     double t_cross; /* absolute time of the cell crossing, +INFINITY when none */
-    int32_t kind;
+    int16_t kind;   /* CC__EV_* */
+    int16_t dir;    /* 0..3, CC__DIR_AGAIN or CC__DIR_STOP */
     int32_t partner;
     uint32_t pcount;
-    int32_t dir;
+    int32_t id;     /* the API's id of the circle at this storage index (sort.c): kept in the
+                       event's line, whose 32 bytes had room for it, rather than in an array */
 } cc__event;
 
 /* A heap entry: the body's next event time with its id beside it, so that sifting touches
@@ -146,7 +148,7 @@ struct cc_world {
 
     /* byte offsets from the header to the arrays */
     size_t off_body, off_ev, off_cold, off_heap, off_hpos, off_touched, off_slot, off_seg;
-    size_t off_id2idx, off_idx2id; /* a circle's id <-> its storage index (see sort.c) */
+    size_t off_id2idx;             /* a circle's id -> its storage index (see sort.c); back: cc__idx2id */
     size_t off_clu;                /* EXACT: the simultaneous-impact cluster (simultaneous.c) */
     size_t off_props, off_segprops; /* per-body properties (props.c); 0: not reserved */
     size_t off_wrap;                /* periodic: int32_t[2] turns per circle; 0: not reserved */
@@ -265,6 +267,8 @@ static inline void cc__advance_body(cc_world *w, cc__body *b, double t)
         b->t = t;
     }
 }
+/* The API's id of the circle at storage index k. */
+static inline int cc__idx2id(const cc_world *w, int k) { return CC__CARR(w, cc__event, off_ev)[k].id; }
 /* Where circle j (storage index) is at time t: its lazy state carried forward, without
  * changing it (for the readers: queries, sensors, the hash). */
 static inline void cc__body_pos(const cc_world *w, int j, double t, double *x, double *y)
@@ -478,7 +482,7 @@ cc_contact cc__world_wall_contact(const cc_circle *c, const cc_segment *s);
 
 /* ---- sort.c: storage in space-filling-curve order ---- */
 /* Inside the library a circle is named by its storage index; the API's ids map to indices
- * through id2idx / idx2id. EXACT sorts storage by grid cell (Morton order) now and then, so
+ * through id2idx / cc__idx2id. EXACT sorts storage by grid cell (Morton order) now and then, so
  * that neighbours share cache lines; then every body is refiled and predicted again. */
 void cc__sort_bodies(cc_world *w);
 /* Sorting is due: enough events since the last one for its cost to be small. */
