@@ -177,7 +177,7 @@ static void test_long_wall_near_end(void)
  * from the line x = 0, CC_OVERLAP with depth 0.125, normal (-1, 0), point (-0.0625, -2), in either
  * order of the ends. Projected from the far end, the parameter 1 - 2 / L rounded to 1 (with the
  * far end, taken relative to the centre, rounded by 2): the foot came out at b itself, 2.06
- * away, and the overlap was missed (the world fuzzer's D26, a wall 4e15 long). */
+ * away, and the overlap was missed (found by the world fuzzer with a wall 4e15 long). */
 static void test_overlap_by_the_end_of_a_long_wall(void)
 {
     double L = 8.0 / EPS;
