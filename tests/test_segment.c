@@ -109,6 +109,20 @@ static void test_random_properties(void)
     }
 }
 
+/* A segment 4 / EPS long, (0, -L)-(0, 0): the point (0.5, -3) by its end b has the foot (0, -3),
+ * exactly, in either order of the ends (the projection is made from the nearer end, where the
+ * parameter 3 / L is exact; from the far end 1 - 3 / L rounds by half an ulp of 1, which is 1 or
+ * more along this segment). */
+static void test_by_the_end_of_a_long_segment(void)
+{
+    double L = 4.0 / EPS;
+    Segment ab = segment(0, -L, 0, 0), ba = segment(0, 0, 0, -L);
+    Vec q = closest(0.5, -3, &ab);
+    EXPECT_VEC_EXACT(0, -3, q);
+    q = closest(0.5, -3, &ba);
+    EXPECT_VEC_EXACT(0, -3, q);
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -119,5 +133,6 @@ int main(void)
     RUN_TEST(test_extreme_lengths);
     RUN_TEST(test_nan_and_null);
     RUN_TEST(test_random_properties);
+    RUN_TEST(test_by_the_end_of_a_long_segment);
     return UNITY_END();
 }

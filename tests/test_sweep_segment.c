@@ -173,6 +173,20 @@ static void test_long_wall_near_end(void)
     expect_hit(&c, &w, 10, 2, 0, -1, L - 1, 0, 0);
 }
 
+/* A wall 8 / EPS long, (0, -L)-(0, 0), and a circle (0.5, -2) r 0.625 by its end b: distance 0.5
+ * from the line x = 0, CC_OVERLAP with depth 0.125, normal (-1, 0), point (-0.0625, -2), in either
+ * order of the ends. Projected from the far end, the parameter 1 - 2 / L rounded to 1 (with the
+ * far end, taken relative to the centre, rounded by 2): the foot came out at b itself, 2.06
+ * away, and the overlap was missed (found by the world fuzzer with a wall 4e15 long). */
+static void test_overlap_by_the_end_of_a_long_wall(void)
+{
+    double L = 8.0 / EPS;
+    Segment ab = segment(0, -L, 0, 0), ba = segment(0, 0, 0, -L);
+    Circle c = circle(0.5, -2, 0, 0, 0.625, 1);
+    expect_overlap(&c, &ab, 0.125, -1, 0, -0.0625, -2);
+    expect_overlap(&c, &ba, 0.125, -1, 0, -0.0625, -2);
+}
+
 #ifdef TEST_FLOAT
 #define RELATIVE_OFFSET 0x1p16 /* ulp 2^-7 there */
 #else
@@ -242,6 +256,7 @@ int main(void)
     RUN_TEST(test_overlap_at_start);
     RUN_TEST(test_far_from_origin);
     RUN_TEST(test_long_wall_near_end);
+    RUN_TEST(test_overlap_by_the_end_of_a_long_wall);
     RUN_TEST(test_overlap_decided_in_relative_frame);
     RUN_TEST(test_touching_slanted_wall);
     return UNITY_END();

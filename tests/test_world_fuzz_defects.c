@@ -540,6 +540,48 @@ static void test_a_circle_a_subnormal_away_from_a_wall_is_pushed_out_finitely(vo
     }
 }
 
+/* D26: EXACT, a wall 4e15 long whose near end b lies by a circle of radius 0.5 that strikes it
+ * (the fuzz input's scene: restitution 1, rolling deceleration 0.498, an empty first step). The
+ * closest point of the wall was projected from its far end, where the parameter's rounding
+ * moves the foot up to 0.45 along the wall: the circle's overlap with the wall was missed by
+ * the sweep and pushed out along a tilted normal, and the step ended with the circle 0.03 to
+ * 0.04 inside the wall. The distance here is taken from the near end (a cross product with the
+ * wall's direction, exact to rounding of the small offset), in every mode. */
+static void test_a_circle_by_the_end_of_a_wall_4e15_long_stays_out_of_it(void)
+{
+    static const int modes[] = {CC_MODE_EXACT, CC_MODE_SWEPT, CC_MODE_DISCRETE};
+    int k;
+    for (k = 0; k < 3; k++) {
+        cc_world_def d;
+        tw_mem m;
+        cc_world *w;
+        cc_segment s = tw_segment(2.1991701244813289, -4072419757867898.0, 0.5, -1.8672199170124486);
+        cc_circle c = tw_circle(1.6182572614107897, -2.2821576763485476, -0.51867219917012441, -3.5892116182572615,
+                                0.50207468879668049, 1.6286307053941909),
+                  got;
+        double ux = s.a.x - s.b.x, uy = s.a.y - s.b.y, dist;
+        int id;
+        cc_world_def_init(&d);
+        d.mode = modes[k];
+        d.max_circles = 16;
+        d.max_segments = 4;
+        d.restitution = 1.0;
+        d.rolling_decel = 0.49792531120331945;
+        w = tw_make(&m, &d, 0);
+        TEST_ASSERT_NOT_NULL(w);
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.1535269709543567));
+        id = cc_world_add_circle(w, &c);
+        TEST_ASSERT_EQUAL_INT(0, id);
+        TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &s));
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 1.6099585062240664));
+        TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_get_circle(w, id, &got));
+        TEST_ASSERT_TRUE(got.pos.y > s.b.y - 100.0); /* by the near end, where the foot lies inside */
+        dist = fabs((got.pos.x - s.b.x) * uy - (got.pos.y - s.b.y) * ux) / hypot(ux, uy);
+        TEST_ASSERT_TRUE_MESSAGE(dist > got.radius - 1e-9, "the circle ended the step inside the wall");
+        tw_free(&m);
+    }
+}
+
 int main(void)
 {
     UNITY_BEGIN();
@@ -555,5 +597,6 @@ int main(void)
     RUN_TEST(test_a_periodic_box_a_million_million_periods_out_finds_every_circle);
     RUN_TEST(test_a_periodic_query_far_out_with_many_cells_is_defined);
     RUN_TEST(test_a_circle_a_subnormal_away_from_a_wall_is_pushed_out_finitely);
+    RUN_TEST(test_a_circle_by_the_end_of_a_wall_4e15_long_stays_out_of_it);
     return UNITY_END();
 }

@@ -58,7 +58,7 @@ echo "30-fuzz: ${secs}s of fuzz_pair, no violation"
 
 # the world fuzzer, the same way, when CC_FUZZ_WORLD_SECONDS > 0 (default 60; 0 leaves only the
 # replay of its corpus under the sanitizers, below). Its finds D1..D19 are in
-# tests/fuzz/world_defects/README.md: the open ones (D7, D10, D11, D12, D14, D18, D26: scenes beyond
+# tests/fuzz/world_defects/README.md: the open ones (D7, D10, D11, D12, D14, D18: scenes beyond
 # the header's Range) are stepped around by the harness; with D16, D17 and D19 fixed, a 300 s run
 # and three of 60 s found nothing new (2026-11-26). Longer by hand: CC_FUZZ_WORLD_SECONDS=600.
 wsecs=${CC_FUZZ_WORLD_SECONDS:-60}
