@@ -5,14 +5,22 @@
 # one's (NEW), the two programs run alternately ROUNDS times each (the order swapped every round),
 # so that a slow moment of the shared machine hits both alike; per round the ratio NEW / OLD of
 # each row, then the medians (min - max) over the rounds (docs/BENCHMARKS.md section 10).
-#   bench/filter_absent.sh OLD/bench_queries NEW/bench_queries [ROUNDS]
-# OLD: e.g. `git archive 73eb23c | tar -x -C /tmp/old` (main before the filter's merge), then
-# cmake -DCMAKE_BUILD_TYPE=Release -DCC_BUILD_TESTS=OFF -DCC_BUILD_DEMO=OFF and the target
-# bench_queries, as NEW's build.
+#   bench/filter_absent.sh OLD NEW/bench/bench_queries [ROUNDS]
+# OLD: a bench_queries program, or a commit of this repository (e.g. 73eb23c, main before the
+# filter's merge), which is then built in a scratch folder (Release, bench_queries only).
 set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 old=$1 new=$2 rounds=${3:-9}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+if [ ! -x "$old" ]; then
+  mkdir -p "$tmp/old-src"
+  git -C "$root" archive "$old" | tar -x -C "$tmp/old-src"
+  cmake -S "$tmp/old-src" -B "$tmp/old-build" -DCMAKE_BUILD_TYPE=Release -DCC_BUILD_TESTS=OFF \
+    -DCC_BUILD_DEMO=OFF -DCC_BUILD_BENCH=ON >/dev/null
+  cmake --build "$tmp/old-build" --target bench_queries -j 2 >/dev/null
+  old=$tmp/old-build/bench/bench_queries
+fi
 for r in $(seq 1 "$rounds"); do
   if [ $((r % 2)) = 1 ]; then order="old new"; else order="new old"; fi
   for x in $order; do
