@@ -221,7 +221,7 @@ def how_to(w):
     w("build-bench/bench/bench_queries casts|walls|filter")
     w("build-bench/bench/bench_bulk add [--quick]   # section 10, the batch add")
     w("build-bench/bench/bench_world uses [--quick]   # section 11, worlds that reserve only what they use")
-    w("bench/filter_absent.sh OLD/bench/bench_queries build-bench/bench/bench_queries   # section 10, by hand")
+    w("bench/filter_absent.sh 73eb23c build-bench/bench/bench_queries   # section 10, by hand")
     w("build-bench/bench/bench_idle [--quick]   # section 5, a step with nothing to do")
     w("build-bench/bench/bench_exact [--quick] [--max-n N] [--only disks|scaling|scenes|d3|d7|gas|big]   # section 9")
     w("CIRCLECOLLIDE_LIBRARY=build-bench/src/libcirclecollide.so PYTHONPATH=bindings/python/src \\")

@@ -523,10 +523,7 @@ static void test_a_circle_a_subnormal_away_from_a_wall_is_pushed_out_finitely(vo
                                 1.3273858921161825, 2.2593360995850622),
                   got;
         int id;
-        cc_world_def_init(&d);
-        d.mode = modes[k];
-        d.max_circles = 4;
-        d.max_segments = 2;
+        d = tw_def(modes[k], 4, 2);
         w = tw_make(&m, &d, 0);
         TEST_ASSERT_NOT_NULL(w);
         TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &s));
@@ -561,10 +558,7 @@ static void test_a_circle_by_the_end_of_a_wall_4e15_long_stays_out_of_it(void)
                   got;
         double ux = s.a.x - s.b.x, uy = s.a.y - s.b.y, dist;
         int id;
-        cc_world_def_init(&d);
-        d.mode = modes[k];
-        d.max_circles = 16;
-        d.max_segments = 4;
+        d = tw_def(modes[k], 16, 4);
         d.restitution = 1.0;
         d.rolling_decel = 0.49792531120331945;
         w = tw_make(&m, &d, 0);

@@ -13,10 +13,7 @@ void tearDown(void) {}
 static cc_world *periodic(tw_mem *m, int mode, double px, double py, int max_circles, int max_segments)
 {
     cc_world_def d;
-    cc_world_def_init(&d);
-    d.mode = mode;
-    d.max_circles = max_circles;
-    d.max_segments = max_segments;
+    d = tw_def(mode, max_circles, max_segments);
     d.period.x = px;
     d.period.y = py;
     d.max_events = 10000000u; /* some steps cross 5e4 cells or run whole gases in one call */

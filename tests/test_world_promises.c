@@ -20,10 +20,7 @@ static cc_world *make(tw_mem *m, int mode, double px, double py, int max_circles
                       cc_sensor_fn on_sensor, cc_contact_fn on_contact, void *user)
 {
     cc_world_def d;
-    cc_world_def_init(&d);
-    d.mode = mode;
-    d.max_circles = max_circles;
-    d.max_segments = max_segments;
+    d = tw_def(mode, max_circles, max_segments);
     d.period.x = px;
     d.period.y = py;
     d.on_sensor = on_sensor;

@@ -25,10 +25,7 @@ static long escapes(int mode, double speed, double dt, int steps, int *max_out)
     uint64_t seed = 36;
     long out = 0;
     int i, k, worst = 0;
-    cc_world_def_init(&d);
-    d.mode = mode;
-    d.max_circles = 80;
-    d.max_segments = 4;
+    d = tw_def(mode, 80, 4);
     w = tw_make(&m, &d, 0);
     TEST_ASSERT_NOT_NULL(w);
     for (i = 0; i < 4; i++)
@@ -81,10 +78,7 @@ static void test_a_centre_past_the_line_comes_back(void)
     cc_world *w;
     cc_circle ball = tw_circle(0, 0, 1, 0, 1, 1), got;
     cc_segment wall = tw_segment(5, -10, 5, 10);
-    cc_world_def_init(&d);
-    d.mode = CC_MODE_DISCRETE;
-    d.max_circles = 2;
-    d.max_segments = 1;
+    d = tw_def(CC_MODE_DISCRETE, 2, 1);
     w = tw_make(&m, &d, 0);
     TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &ball));
     TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &wall));
@@ -108,10 +102,7 @@ static void test_a_corner_puts_back_across_both_walls(void)
     cc_world *w;
     cc_circle ball = tw_circle(2, 2, -3, -3, 1, 1), got;
     cc_segment x0 = tw_segment(0, -10, 0, 10), y0 = tw_segment(-10, 0, 10, 0);
-    cc_world_def_init(&d);
-    d.mode = CC_MODE_DISCRETE;
-    d.max_circles = 2;
-    d.max_segments = 2;
+    d = tw_def(CC_MODE_DISCRETE, 2, 2);
     w = tw_make(&m, &d, 0);
     TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &ball));
     TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &x0));

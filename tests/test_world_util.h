@@ -47,6 +47,18 @@ static inline cc_world *tw_make(tw_mem *m, const cc_world_def *def, size_t extra
     return st == CC_OK ? w : NULL;
 }
 
+/* This header's def with its defaults, in the given mode and with room for the given circles and
+ * walls: what most world tests start from. */
+static inline cc_world_def tw_def(int mode, int max_circles, int max_segments)
+{
+    cc_world_def d;
+    cc_world_def_init(&d);
+    d.mode = mode;
+    d.max_circles = max_circles;
+    d.max_segments = max_segments;
+    return d;
+}
+
 /* A circle, a wall and a world's counters in one expression. */
 static inline cc_circle tw_circle(double x, double y, double vx, double vy, double r, double m)
 {
