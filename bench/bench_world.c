@@ -460,6 +460,45 @@ static int cmd_features(const opts *o)
     return 0;
 }
 
+/* The periodic hard-disk gas of N disks of diameter 1 at area fraction eta (the lattice start of
+ * seed), in a world of the given uses: stepped away from the lattice, then timed over per_disk
+ * collisions per disk. Writes the cost per collision and the world's collisions at the end;
+ * returns 0, or 1 when the world cannot be made. */
+static int gas_cost(int n, double eta, uint64_t seed, unsigned uses, double per_disk, double *ns_per_collision,
+                    uint64_t *total)
+{
+    double side, t0, c0;
+    bench_scene sc;
+    cc_world_def def;
+    world_box b;
+    int i;
+    bench_scene_disks(&sc, n, eta, seed, &side);
+    cc_world_def_init(&def);
+    def.max_circles = n;
+    def.period.x = def.period.y = side;
+    def.uses = uses;
+    b.bytes = cc_world_size(&def);
+    b.mem = bench_alloc(b.bytes);
+    b.w = cc_world_init(b.mem, b.bytes, &def, NULL);
+    if (b.w == NULL) {
+        bench_scene_free(&sc);
+        free(b.mem);
+        return 1;
+    }
+    for (i = 0; i < n; i++)
+        cc_world_add_circle(b.w, &sc.c[i]);
+    bench_scene_free(&sc);
+    step(b.w, 5.0); /* away from the lattice */
+    c0 = (double)collisions(b.w);
+    t0 = bench_now();
+    while ((double)collisions(b.w) - c0 < per_disk * n)
+        step(b.w, 0.5);
+    *ns_per_collision = (bench_now() - t0) * 1e9 / ((double)collisions(b.w) - c0);
+    *total = collisions(b.w);
+    world_free(&b);
+    return 0;
+}
+
 /* Hard disks in a periodic box (issue 15): the cost per collision of N = 4000 disks of diameter
  * 1 at area fractions 0.3, 0.5 and 0.7 (20 collisions per disk each, after leaving the lattice),
  * as ratios to 0.3 within each round: a denser fluid collides more often, and each collision
@@ -467,38 +506,16 @@ static int cmd_features(const opts *o)
 static int cmd_disks(const opts *o)
 {
     static const double etas[3] = {0.3, 0.5, 0.7};
-    int n = 4000, reps = o->quick ? 3 : 7, k, e, i;
+    int n = 4000, reps = o->quick ? 3 : 7, k, e;
     double cost[3][16], med[3], lo[3], hi[3];
-    uint64_t coll[3] = {0, 0, 0};
     for (k = 0; k < reps; k++)
         for (e = 0; e < 3; e++) {
             int v = (e + k) % 3;
-            double side, t0, c0;
-            bench_scene sc;
-            cc_world_def def;
-            world_box b;
-            bench_scene_disks(&sc, n, etas[v], 99 + (uint64_t)k, &side);
-            cc_world_def_init(&def);
-            def.max_circles = n;
-            def.period.x = def.period.y = side;
-            b.bytes = cc_world_size(&def);
-            b.mem = bench_alloc(b.bytes);
-            b.w = cc_world_init(b.mem, b.bytes, &def, NULL);
-            if (b.w == NULL) {
+            uint64_t total;
+            if (gas_cost(n, etas[v], 99 + (uint64_t)k, CC_USES_ALL, 20.0, &cost[v][k], &total) != 0) {
                 fprintf(stderr, "bench_world disks: init failed\n");
                 return 1;
             }
-            for (i = 0; i < n; i++)
-                cc_world_add_circle(b.w, &sc.c[i]);
-            bench_scene_free(&sc);
-            step(b.w, 5.0); /* away from the lattice */
-            c0 = (double)collisions(b.w);
-            t0 = bench_now();
-            while ((double)collisions(b.w) - c0 < 20.0 * n)
-                step(b.w, 0.5);
-            cost[v][k] = (bench_now() - t0) * 1e9 / ((double)collisions(b.w) - c0);
-            coll[v] += collisions(b.w) - (uint64_t)c0;
-            world_free(&b);
         }
     printf("%-28s %14s %22s %10s\n", "periodic hard disks N=4000", "ns/collision", "spread", "ratio");
     for (e = 0; e < 3; e++) {
@@ -510,7 +527,6 @@ static int cmd_disks(const opts *o)
         printf("area fraction %-14.1f %14.1f %10.1f - %-9.1f %10.3f\n", etas[e], med[e], lo[e], hi[e],
                bench_median(ratio, (size_t)reps));
     }
-    (void)coll;
     return 0;
 }
 
@@ -523,7 +539,7 @@ static int cmd_uses(const opts *o)
 {
     static const unsigned uses[3] = {0u, CC_USES_PROPS, CC_USES_ALL};
     static const char *uses_name[3] = {"0", "PROPS", "ALL"};
-    int ns[2] = {10000, 1000000}, nn = o->quick || o->max_n < 1000000 ? 1 : 2, a, u, p, k, i;
+    int ns[2] = {10000, 1000000}, nn = o->quick || o->max_n < 1000000 ? 1 : 2, a, u, p, k;
     FILE *csv = open_csv(o->csv, "row,n,value,lo,hi");
     if (o->quick)
         ns[0] = 2000;
@@ -555,34 +571,13 @@ static int cmd_uses(const opts *o)
         for (k = 0; k < reps; k++)
             for (u = 0; u < 2; u++) {
                 int v = (u + k) % 2;
-                double side, t0, c0;
-                bench_scene sc;
-                cc_world_def def;
-                world_box b;
-                bench_scene_disks(&sc, n, 0.3, 99 + (uint64_t)k, &side);
-                cc_world_def_init(&def);
-                def.max_circles = n;
-                def.period.x = def.period.y = side;
-                def.uses = v ? CC_USES_ALL : 0u;
-                b.bytes = cc_world_size(&def);
-                b.mem = bench_alloc(b.bytes);
-                b.w = cc_world_init(b.mem, b.bytes, &def, NULL);
-                if (b.w == NULL) {
+                uint64_t total;
+                if (gas_cost(n, 0.3, 99 + (uint64_t)k, v ? CC_USES_ALL : 0u, per_disk, &cost[v][k], &total) != 0) {
                     fprintf(stderr, "bench_world uses: init failed\n");
                     return 1;
                 }
-                for (i = 0; i < n; i++)
-                    cc_world_add_circle(b.w, &sc.c[i]);
-                bench_scene_free(&sc);
-                step(b.w, 5.0); /* away from the lattice */
-                c0 = (double)collisions(b.w);
-                t0 = bench_now();
-                while ((double)collisions(b.w) - c0 < per_disk * n)
-                    step(b.w, 0.5);
-                cost[v][k] = (bench_now() - t0) * 1e9 / ((double)collisions(b.w) - c0);
                 if (k == 0)
-                    coll[v] = collisions(b.w);
-                world_free(&b);
+                    coll[v] = total;
             }
         for (u = 0; u < 2; u++) {
             bench_range(cost[u], (size_t)reps, &lo, &hi);
