@@ -118,6 +118,23 @@ def scaling_plot(scaling, path):
 SECTION_12 = "## 10. The 1.2 calls: the batch add and the query filter"
 
 
+def bench_block(w, text):
+    """A benchmark's printout as a code block, without its figure lines."""
+    w("```")
+    w("\n".join(l for l in text.strip("\n").splitlines() if not l.startswith("figure ")))
+    w("```")
+    w("")
+
+
+def measured_apart(w, res, machine_file, command):
+    """The line naming a section's own run (its command and the machine's state then), when the
+    section was measured apart from bench/run.sh."""
+    machine = read(os.path.join(res, machine_file)).strip().splitlines()
+    if command and machine:
+        w("Measured apart from the sections above (`%s`), in one session: %s." % (command, "; ".join(machine)))
+        w("")
+
+
 def section_12(res, w, command=None):
     """Section 10 from bulk.txt, filter.txt and python_bulk.txt (bench_bulk add, bench_queries
     filter, bench/python_bulk.py); with command, the separate run it came from is named."""
@@ -126,17 +143,9 @@ def section_12(res, w, command=None):
     if not (bulk or filt or pyb):
         return
 
-    def block(text):
-        w("```")
-        w("\n".join(l for l in text.strip("\n").splitlines() if not l.startswith("figure ")))
-        w("```")
-        w("")
     w(SECTION_12)
     w("")
-    machine = read(os.path.join(res, "bulk_machine.txt")).strip().splitlines()
-    if command and machine:
-        w("Measured apart from the sections above (`%s`), in one session: %s." % (command, "; ".join(machine)))
-        w("")
+    measured_apart(w, res, "bulk_machine.txt", command)
     if bulk:
         w("`bench_bulk add`: N circles (the gas of section 4 at area fraction 0.3, EXACT, its four walls) "
           "added to an empty world by one `cc_world_add_circles` call and by N `cc_world_add_circle` calls, "
@@ -146,7 +155,7 @@ def section_12(res, w, command=None):
           "it reads its input twice: in C it is no faster than the single adds (it pays for that second "
           "pass); what it saves is a binding's crossing of its FFI for every circle (below).")
         w("")
-        block(bulk)
+        bench_block(w, bulk)
     if pyb:
         w("`bench/python_bulk.py`: the same from Python, `World.add_circles(pos, vel, radius, mass)` from "
           "numpy arrays (one C call per chunk) against a loop of `World.add_circle` over `Circle` values "
@@ -155,7 +164,7 @@ def section_12(res, w, command=None):
           "zeros: pages mapped at their first write) is first written by the adds, in both rows: at "
           "N = 1e6 that is part of what `add_circles` costs, as it is for a user.")
         w("")
-        block(pyb)
+        bench_block(w, pyb)
     if filt:
         w("`bench_queries filter`: casts and disc queries from random points of the gas of 10,000 "
           "(section 6's calls), each as the 1.1 call (a mask), as its `_filtered` twin with "
@@ -166,14 +175,14 @@ def section_12(res, w, command=None):
           "variants' order rotated each round; ratios to the 1.1 call per round. The 1.1 calls are the "
           "`_filtered` ones with {mask, -1}, so a program that sets no filter pays nothing for it.")
         w("")
-        block(filt)
+        bench_block(w, filt)
     if absent:
         w("`bench/filter_absent.sh` (by hand: it needs a build from before the filter): the 1.1 calls "
           "(`bench_queries casts --quick`, the same points) of main before the filter's merge (73eb23c) "
           "against this build's, the two programs alternating, the ratio per round: what the filter "
           "costs a program that sets none.")
         w("")
-        block(absent)
+        bench_block(w, absent)
 
 
 SECTION_USES = "## 11. Worlds that reserve only what they use"
@@ -186,10 +195,7 @@ def section_uses(res, w, command=None):
         return
     w(SECTION_USES)
     w("")
-    machine = read(os.path.join(res, "uses_machine.txt")).strip().splitlines()
-    if command and machine:
-        w("Measured apart from the sections above (`%s`), in one session: %s." % (command, "; ".join(machine)))
-        w("")
+    measured_apart(w, res, "uses_machine.txt", command)
     w("`bench_world uses`: the bytes per circle `cc_world_size` asks for (EXACT; SWEPT and DISCRETE "
       "need 9 to 11 fewer) with `cc_world_def.uses` = 0, `CC_USES_PROPS` and `CC_USES_ALL` (the "
       "default, and what a 1.0 or 1.1 def gets), open and periodic; then the plain periodic gas "
@@ -204,10 +210,7 @@ def section_uses(res, w, command=None):
       "machine's (memory and its pages, the other jobs) rather than the world's, which reads the "
       "same memory either way.")
     w("")
-    w("```")
-    w("\n".join(l for l in text.strip("\n").splitlines() if not l.startswith("figure ")))
-    w("```")
-    w("")
+    bench_block(w, text)
 
 
 def how_to(w):
