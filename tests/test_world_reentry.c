@@ -54,6 +54,19 @@ static void on_contact(const cc_contact_event *e, void *user)
     p->refused += r == tw_code(CC_ERR_BUSY);
 }
 
+/* What the callback scenes start from: a (id 0) and b (1) at rest, c (2) bouncing between the
+ * walls at x = -20 and x = 20. */
+static void add_scene(cc_world *w)
+{
+    cc_circle a = tw_circle(0, 0, 0, 0, 1, 1), b = tw_circle(5, 0, 0, 0, 1, 1), c = tw_circle(0, 10, 3, 0, 1, 1);
+    cc_segment l = tw_segment(-20, -30, -20, 30), r = tw_segment(20, -30, 20, 30);
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &a));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &b));
+    TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &c));
+    TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &l));
+    TEST_ASSERT_EQUAL_INT(1, cc_world_add_segment(w, &r));
+}
+
 /* A scene whose every entry point fires the callback: a and b at rest, c bouncing between walls,
  * then (FIRE_ADD) d added overlapping a and approaching it, (FIRE_SET) b set overlapping a and
  * approaching it, or (FIRE_STEP) a plain step with impacts. Returns the world. */
@@ -61,9 +74,7 @@ static cc_world *run(tw_mem *m, int mode, int fire, probe *p)
 {
     cc_world_def d;
     cc_world *w;
-    cc_circle a = tw_circle(0, 0, 0, 0, 1, 1), b = tw_circle(5, 0, 0, 0, 1, 1), c = tw_circle(0, 10, 3, 0, 1, 1);
     cc_circle onto = tw_circle(1.5, 0, -1, 0, 1, 1); /* overlaps a by 0.5, closing at speed 1 */
-    cc_segment l = tw_segment(-20, -30, -20, 30), r = tw_segment(20, -30, 20, 30);
     int k;
     cc_world_def_init(&d);
     d.max_circles = 64;
@@ -74,11 +85,7 @@ static cc_world *run(tw_mem *m, int mode, int fire, probe *p)
     w = tw_make(m, &d, 0);
     TEST_ASSERT_NOT_NULL(w);
     p->w = w;
-    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &a));
-    TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &b));
-    TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &c));
-    TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &l));
-    TEST_ASSERT_EQUAL_INT(1, cc_world_add_segment(w, &r));
+    add_scene(w);
     p->newest = 2;
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.0)); /* everything filed: add and set act at once */
     if (fire == FIRE_ADD) {
@@ -241,9 +248,7 @@ static cc_world *snap_run(tw_mem *m, int mode, int fire, snap *s)
 {
     cc_world_def d;
     cc_world *w;
-    cc_circle a = tw_circle(0, 0, 0, 0, 1, 1), b = tw_circle(5, 0, 0, 0, 1, 1), c = tw_circle(0, 10, 3, 0, 1, 1);
     cc_circle onto = tw_circle(1.5, 0, -1, 0, 1, 1);
-    cc_segment l = tw_segment(-20, -30, -20, 30), r = tw_segment(20, -30, 20, 30);
     int k;
     cc_world_def_init(&d);
     d.max_circles = 64;
@@ -255,11 +260,7 @@ static cc_world *snap_run(tw_mem *m, int mode, int fire, snap *s)
     TEST_ASSERT_NOT_NULL(w);
     (void)mem_copy(&s->mem, m->mem, m->bytes);
     g_snap = s;
-    TEST_ASSERT_EQUAL_INT(0, cc_world_add_circle(w, &a));
-    TEST_ASSERT_EQUAL_INT(1, cc_world_add_circle(w, &b));
-    TEST_ASSERT_EQUAL_INT(2, cc_world_add_circle(w, &c));
-    TEST_ASSERT_EQUAL_INT(0, cc_world_add_segment(w, &l));
-    TEST_ASSERT_EQUAL_INT(1, cc_world_add_segment(w, &r));
+    add_scene(w);
     TEST_ASSERT_EQUAL_INT(CC_OK, cc_world_step(w, 0.0));
     s->live = w; /* from here on: the first contact takes the snapshot */
     if (fire == FIRE_ADD)
