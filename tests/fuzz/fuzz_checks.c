@@ -99,8 +99,9 @@ static int circle_ok(double px, double py, double vx, double vy, double r, doubl
 static int tmax_ok(double t) { return t >= 0.0; }
 /* |n|^2 within a few ulps of 1 in precision eps */
 static int unit_ok(double x, double y, double eps) { return v_ok(x, y) && fabs(x * x + y * y - 1.0) <= 8.0 * eps; }
-/* the contract's caller normal: |n| within tol of 1 (checked with margin both ways below) */
-static double norm(double x, double y) { return sqrt(x * x + y * y); }
+/* the contract's caller normal: |n| within tol of 1 (checked with margin both ways below); hypot,
+ * so that a length whose square would be subnormal (speeds near 1e-161) keeps its digits */
+static double norm(double x, double y) { return hypot(x, y); }
 static int below(double x, int max_exp) { return fabs(x) < ldexp(1.0, max_exp - 8); }
 /* moderate numbers (every nonzero magnitude in 2^-20..2^20): where the rolling brute-force checks run */
 static int moderate(double x) { return x == 0.0 || (fabs(x) > 0x1p-20 && fabs(x) < 0x1p20); }
